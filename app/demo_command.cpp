@@ -1,0 +1,7 @@
+#include "app/commands.hpp"
+
+namespace signstim::app {
+
+void registerDemoCommand(Commands&) {}
+
+}  // namespace signstim::app

@@ -1,0 +1,52 @@
+// The `signstim` command: parses arguments, wires stimuli -> renderer, reports progress.
+#include "app/commands.hpp"
+#include "common/error.hpp"
+
+#include <cstdio>
+#include <exception>
+
+#ifndef SIGNSTIM_VERSION
+#define SIGNSTIM_VERSION "0.0.0"
+#endif
+
+int main(int argc, char** argv) {
+    using namespace signstim;
+    CLI::App root{
+        "signstim — stimulus videos for studies of animated ASL verbs.\n"
+        "Renders a signer headless (Vulkan; Mesa lavapipe when no GPU is present) from the data\n"
+        "files in scenes/: hand shapes, verb models, stories and study designs.\n",
+        "signstim"};
+    root.set_version_flag("--version", SIGNSTIM_VERSION);
+    root.require_subcommand(1);
+    root.footer(
+        "\nRun `signstim COMMAND --help` for the options of one command.\n"
+        "Exit status: 0 success, 1 usage error, 2 bad input (the message names the file, line\n"
+        "and field), 3 environment problem (no Vulkan device, ffmpeg missing, disk full).");
+
+    CLI::App* bench = root.add_subcommand(
+        "bench", "Measure performance: prints figures and ratios (see BENCHMARKS.md)");
+    bench->require_subcommand(1);
+
+    app::Commands commands{root, *bench};
+    app::registerDemoCommand(commands);
+    app::registerRenderCommands(commands);
+    app::registerHandCommands(commands);
+    app::registerAvatarCommands(commands);
+    app::registerVerbCommands(commands);
+
+    try {
+        root.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return root.exit(e);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "signstim: error: %s\n", e.what());
+        return 2;
+    } catch (const EnvironmentError& e) {
+        std::fprintf(stderr, "signstim: error: %s\n", e.what());
+        return 3;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "signstim: internal error: %s\n", e.what());
+        return 4;
+    }
+    return 0;
+}

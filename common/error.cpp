@@ -1,0 +1,29 @@
+#include "common/error.hpp"
+
+namespace signstim {
+namespace {
+std::string compose(const std::string& file, int line, const std::string& field,
+                    const std::string& message) {
+    std::string text;
+    if (!file.empty()) {
+        text += file;
+        if (line > 0) text += ":" + std::to_string(line);
+        text += ": ";
+    }
+    if (!field.empty()) text += "field '" + field + "': ";
+    text += message;
+    return text;
+}
+}  // namespace
+
+InputError::InputError(std::string file, int line, std::string field, const std::string& message)
+    : std::runtime_error(compose(file, line, field, message)),
+      file_(std::move(file)),
+      line_(line),
+      field_(std::move(field)),
+      detail_(message) {}
+
+InputError::InputError(const std::string& message)
+    : std::runtime_error(message), detail_(message) {}
+
+}  // namespace signstim

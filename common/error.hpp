@@ -1,0 +1,37 @@
+#pragma once
+// One error path for user mistakes (STYLE.md: "Errors, output, determinism").
+// Anything the user can fix — a malformed file, an unknown name, a value out of range —
+// is thrown as InputError naming the input, the line (when known) and the field. The
+// `signstim` command turns it into one clear message and exit status 2; it never aborts.
+#include <stdexcept>
+#include <string>
+
+namespace signstim {
+
+class InputError : public std::runtime_error {
+public:
+    // file: path or other name of the input ("<command line>" for flags); line: 1-based, 0
+    // if unknown; field: JSON pointer, CSV column, flag name... (may be empty).
+    InputError(std::string file, int line, std::string field, const std::string& message);
+    explicit InputError(const std::string& message);
+
+    const std::string& file() const { return file_; }
+    int line() const { return line_; }
+    const std::string& field() const { return field_; }
+    const std::string& detail() const { return detail_; }
+
+private:
+    std::string file_;
+    int line_ = 0;
+    std::string field_;
+    std::string detail_;
+};
+
+// Errors that are not the user's fault but the environment's (no Vulkan device, ffmpeg
+// missing, disk full). Exit status 3.
+class EnvironmentError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace signstim
