@@ -11,7 +11,8 @@ struct Commands {
     CLI::App& bench;  // `signstim bench`
 };
 
-void registerRenderCommands(Commands& commands);  // devices, render-gltf, bench render
+void registerRenderCommands(Commands& commands);  // render-gltf
+void registerRenderBenchCommands(Commands& commands);  // devices, bench render
 void registerHandCommands(Commands& commands);    // hand ..., bench hand
 void registerVerbCommands(Commands& commands);    // train, verb, evaluate
 void registerAvatarCommands(Commands& commands);  // avatar build, handshapes, pose

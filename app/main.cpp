@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
     app::Commands commands{root, *bench};
     app::registerDemoCommand(commands);
     app::registerRenderCommands(commands);
+    app::registerRenderBenchCommands(commands);
     app::registerHandCommands(commands);
     app::registerAvatarCommands(commands);
     app::registerVerbCommands(commands);

@@ -1,0 +1,2 @@
+# glTF/output half of signstim_renderer (owned by the glTF side).
+target_sources(signstim_renderer PRIVATE)
