@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# signstim quick start. Each form installs missing Debian packages, builds, then:
+#   ./run.sh          runs the main job and prints where its output is
+#   ./run.sh test     runs the whole test suite
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")"
+
+mode=${1:-run}
+case "$mode" in
+  run|test) ;;
+  -h|--help) sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  *) echo "usage: ./run.sh [run|test]" >&2; exit 1 ;;
+esac
+
+scripts/setup.sh
+
+build=${SIGNSTIM_BUILD_DIR:-build}
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build "$build" -j "$jobs"
+
+if [[ $mode == test ]]; then
+  # lavapipe renders with several threads per draw; two test processes keep both cores busy.
+  ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
+else
+  "$build/signstim" demo --out out
+fi

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages signstim needs, only those that are missing.
+# Idempotent; runs apt-get as root, or through sudo when not root. Says what it installs.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
+  libglm-dev libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libeigen3-dev
+  libcli11-dev libgtest-dev
+  ffmpeg
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "setup: all ${#packages[@]} Debian packages present."
+  exit 0
+fi
+
+if [[ $(id -u) -eq 0 ]]; then
+  sudo=()
+elif command -v sudo >/dev/null 2>&1; then
+  sudo=(sudo)
+else
+  echo "setup: these packages are missing and I am neither root nor able to sudo:" >&2
+  printf '  %s\n' "${missing[@]}" >&2
+  echo "setup: install them with: apt-get install ${missing[*]}" >&2
+  exit 1
+fi
+
+echo "setup: installing ${#missing[@]} missing package(s): ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "setup: done."
