@@ -1,2 +1,3 @@
 # glTF/output half of signstim_renderer (owned by the glTF side).
-target_sources(signstim_renderer PRIVATE)
+target_sources(signstim_renderer PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/scene.cpp)

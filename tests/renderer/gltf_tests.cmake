@@ -1,1 +1,6 @@
-# signstim_renderer_gltf_tests (glTF side): loader, broken input, animation, output, video.
+# signstim_renderer_gltf_tests (glTF side): scene maths, loader, broken input, animation,
+# writer round trip, image files, video, frame sinks.
+signstim_add_test(signstim_renderer_gltf_tests
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/scene_test.cpp
+  LIBS signstim_renderer OpenImageIO::OpenImageIO)
