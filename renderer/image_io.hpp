@@ -1,0 +1,27 @@
+#pragma once
+// Image files (SPEC §5): PNG 8/16-bit with optional alpha, EXR and TIFF, written atomically
+// through OpenImageIO. The bit depth follows Image::format (Rgba8 -> 8-bit, Rgba16 ->
+// 16-bit; EXR is always half float, linearised from the sRGB-encoded pixels).
+#include "renderer/image.hpp"
+
+#include <filesystem>
+
+namespace signstim::render {
+
+struct ImageWriteOptions {
+    // zlib level 0..9. Level 1 is several times faster than 6 on rendered frames for a few
+    // per cent more bytes; it keeps PNG output from becoming the bottleneck.
+    int pngCompression = 1;
+    bool alpha = true;  // false: RGB only (alpha dropped)
+};
+
+// Format by extension: .png, .exr, .tif/.tiff. Creates missing parent directories.
+// Throws InputError naming the path (unknown extension, unwritable location, bad options).
+void writeImage(const Image& image, const std::filesystem::path& path,
+                const ImageWriteOptions& options = {});
+
+// Reads any OIIO-readable file into RGBA (missing alpha = opaque); 16-bit files give Rgba16,
+// everything else Rgba8. Throws InputError naming the file.
+Image readImage(const std::filesystem::path& path);
+
+}  // namespace signstim::render
