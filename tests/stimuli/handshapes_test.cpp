@@ -1,0 +1,181 @@
+// The handshape library (SPEC §1.6): complete, labelled, physically plausible (contact
+// checks of SPEC §2.6 on the McDonald hand's bone capsules), and strict about bad files.
+#include "common/error.hpp"
+#include "hand/contact.hpp"
+#include "stimuli/handshapes.hpp"
+#include "stimuli/scenes_path.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+namespace signstim::stimuli {
+namespace {
+
+using hand::Digit;
+using hand::Side;
+
+// Capsules are a crude stand-in for soft fingers: allow this much overlap (skin compresses).
+constexpr float kInterpenetrationToleranceMm = 1.0f;
+// "Touching": the thumb-tip and fingertip spheres meet within a few millimetres.
+constexpr float kContactMinGapMm = -1.5f;
+constexpr float kContactMaxGapMm = 3.0f;
+
+class HandshapeLibraryTest : public ::testing::Test {
+protected:
+    hand::HandModel model = hand::buildHandModel();
+    HandshapeLibrary library =
+        loadHandshapes(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/handshapes.json", model);
+};
+
+TEST_F(HandshapeLibraryTest, HasEveryStaticLetterAndTheVerbHandshapes) {
+    const std::string letters = "ABCDEFGHIKLMNOPQRSTUVWXY";  // no J, Z (they move)
+    for (char letter : letters) EXPECT_NE(library.find(std::string(1, letter)), nullptr) << letter;
+    for (const char* name : {"1", "X", "B", "bent-B", "C", "flat-O", "O", "5"}) {
+        EXPECT_NE(library.find(name), nullptr) << name;
+    }
+    EXPECT_EQ(library.find("J"), nullptr);
+    EXPECT_EQ(library.find("Z"), nullptr);
+    EXPECT_THROW(library.at("Z"), InputError);
+}
+
+TEST_F(HandshapeLibraryTest, ShapesCarryAslLexLabelsWhereOneExists) {
+    for (const Handshape& shape : library.shapes) {
+        if (shape.name == "P" || shape.name == "Q") {
+            EXPECT_TRUE(shape.aslLexLabel.empty()) << shape.name << " has no handshape of its own";
+        } else {
+            EXPECT_FALSE(shape.aslLexLabel.empty()) << shape.name;
+        }
+    }
+    EXPECT_EQ(library.at("bent-B").aslLexLabel, "bent_B");
+    EXPECT_EQ(library.at("flat-O").aslLexLabel, "flat_O");
+}
+
+TEST_F(HandshapeLibraryTest, ThumbTipTouchesTheNamedFingertip) {
+    const std::pair<const char*, Digit> expected[] = {
+        {"O", Digit::Index}, {"F", Digit::Index}, {"D", Digit::Middle}, {"flat-O", Digit::Index}, {"T", Digit::Index}};
+    for (const auto& [name, digit] : expected) {
+        const Handshape& shape = library.at(name);
+        ASSERT_TRUE(shape.thumbContact.has_value()) << name;
+        EXPECT_EQ(*shape.thumbContact, digit) << name;
+    }
+    int checked = 0;
+    for (const Handshape& shape : library.shapes) {
+        if (!shape.thumbContact) continue;
+        for (Side side : {Side::Right, Side::Left}) {
+            const hand::HandPose pose = hand::forwardKinematics(model, shape.controls, side);
+            const hand::Capsule thumb = hand::fingertipSphere(model, pose, Digit::Thumb);
+            const hand::Capsule finger = hand::fingertipSphere(model, pose, *shape.thumbContact);
+            const float gap = glm::distance(thumb.start, finger.start) - thumb.radiusMm - finger.radiusMm;
+            EXPECT_GE(gap, kContactMinGapMm) << shape.name << ": thumb tip pushed into the fingertip";
+            EXPECT_LE(gap, kContactMaxGapMm) << shape.name << ": thumb tip does not reach the fingertip";
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, 10);
+}
+
+TEST_F(HandshapeLibraryTest, NoTwoDigitsInterpenetrateInAnyShape) {
+    for (const Handshape& shape : library.shapes) {
+        const hand::HandPose pose = hand::forwardKinematics(model, shape.controls, Side::Right);
+        const hand::BoneGap gap = hand::closestInterDigitGap(hand::boneCapsules(model, pose));
+        EXPECT_GE(gap.gapMm, -kInterpenetrationToleranceMm)
+            << shape.name << ": " << hand::boneName(Side::Right, gap.first) << " and "
+            << hand::boneName(Side::Right, gap.second) << " overlap by " << -gap.gapMm << " mm";
+    }
+}
+
+TEST_F(HandshapeLibraryTest, AbductionIsStoredAsSpreadAfterRadiation) {
+    // SPEC §1.6: 5 = abduction (−20°, 0°, 12°, 25°), σ = α − ρ with ρ = (−8°, 0°, 4°, 14°).
+    const hand::HandControls& five = library.at("5").controls;
+    EXPECT_FLOAT_EQ(five.fingers[0].spreadDeg, -12.0f);
+    EXPECT_FLOAT_EQ(five.fingers[1].spreadDeg, 0.0f);
+    EXPECT_FLOAT_EQ(five.fingers[2].spreadDeg, 8.0f);
+    EXPECT_FLOAT_EQ(five.fingers[3].spreadDeg, 11.0f);
+    // Presets: A = FC on every finger.
+    EXPECT_FLOAT_EQ(library.at("A").controls.fingers[3].bend, 0.95f);
+    EXPECT_FLOAT_EQ(library.at("A").controls.fingers[3].hook, 0.8f);
+}
+
+// ---- malformed files --------------------------------------------------------------------
+const char* kGood = R"({
+  "fingerPresets": {"E0": {"bend": 0, "hook": 0}},
+  "thumbPresets": {"side": {"bendDeg": 5, "spreadDeg": 12, "mcpDeg": 0, "ipDeg": 0}},
+  "handshapes": [
+    {"name": "B",
+     "fingers": {"index": "E0", "middle": "E0", "ring": "E0", "little": "E0"},
+     "thumb": "side"},
+    {"name": "Bad",
+     "fingers": {"index": "E0", "middle": "E0", "ring": "E0", "little": "E0"},
+     "thumb": "side"}
+  ]
+})";
+
+InputError parseError(const std::string& text) {
+    try {
+        parseHandshapes(text, "shapes.json", hand::buildHandModel());
+    } catch (const InputError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for:\n" << text;
+    return InputError("none");
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.rfind(from);  // the second shape ("Bad") is the last match
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+}
+
+TEST(HandshapeFileTest, GoodFileParses) {
+    const HandshapeLibrary library = parseHandshapes(kGood, "shapes.json", hand::buildHandModel());
+    EXPECT_EQ(library.shapes.size(), 2u);
+}
+
+TEST(HandshapeFileTest, UnknownPresetNamesFileLineShapeAndField) {
+    const InputError e = parseError(replaced(kGood, "\"little\": \"E0\"", "\"little\": \"E9\""));
+    EXPECT_EQ(e.file(), "shapes.json");
+    EXPECT_EQ(e.line(), 9);
+    EXPECT_NE(e.field().find("Bad"), std::string::npos) << e.field();
+    EXPECT_NE(e.field().find("little"), std::string::npos) << e.field();
+    EXPECT_NE(std::string(e.what()).find("E9"), std::string::npos);
+}
+
+TEST(HandshapeFileTest, NonNumericAndOutOfRangeValuesAreRejected) {
+    InputError e = parseError(replaced(kGood, "\"ring\": \"E0\"", "\"ring\": {\"bend\": \"much\"}"));
+    EXPECT_EQ(e.line(), 9);
+    EXPECT_NE(e.field().find("ring.bend"), std::string::npos) << e.field();
+    e = parseError(replaced(kGood, "\"ring\": \"E0\"", "\"ring\": {\"spreadDeg\": 80}"));
+    EXPECT_NE(std::string(e.what()).find("out of range"), std::string::npos) << e.what();
+    e = parseError(replaced(kGood, "\"thumb\": \"side\"", "\"thumb\": {\"bendDeg\": 5, \"spredDeg\": 3}"));
+    EXPECT_NE(e.field().find("spredDeg"), std::string::npos) << e.field();
+    EXPECT_EQ(e.line(), 10);
+}
+
+TEST(HandshapeFileTest, MissingFingerDuplicateNameAndBrokenJsonAreRejected) {
+    InputError e = parseError(replaced(kGood, ", \"little\": \"E0\"", ""));
+    EXPECT_NE(e.field().find("little"), std::string::npos);
+    e = parseError(replaced(kGood, "\"name\": \"Bad\"", "\"name\": \"B\""));
+    EXPECT_NE(std::string(e.what()).find("duplicate"), std::string::npos);
+    e = parseError(replaced(kGood, "\"thumb\": \"side\"}", "\"thumb\": \"side\""));
+    EXPECT_GE(e.line(), 10);
+    EXPECT_NE(std::string(e.what()).find("JSON"), std::string::npos);
+    e = parseError(replaced(kGood, "\"thumb\": \"side\"", "\"thumb\": \"side\", \"contact\": \"pinky\""));
+    EXPECT_NE(std::string(e.what()).find("pinky"), std::string::npos);
+}
+
+TEST(ScenesPathTest, ExplicitDirectoryWinsAndMissingOnesAreErrors) {
+    const std::string source = std::string(SIGNSTIM_SOURCE_DIR) + "/scenes";
+    EXPECT_EQ(resolveScenesDir(source), source);
+    EXPECT_THROW(resolveScenesDir("/nonexistent/scenes"), InputError);
+    ::setenv("SIGNSTIM_SCENES", source.c_str(), 1);
+    EXPECT_EQ(resolveScenesDir(), source);
+    ::setenv("SIGNSTIM_SCENES", "/nonexistent/scenes", 1);
+    EXPECT_THROW(resolveScenesDir(), InputError);
+    ::unsetenv("SIGNSTIM_SCENES");
+    EXPECT_TRUE(std::filesystem::is_directory(resolveScenesDir()));
+}
+
+}  // namespace
+}  // namespace signstim::stimuli
