@@ -1,0 +1,1156 @@
+#include "renderer/gltf_loader.hpp"
+
+#include "common/error.hpp"
+
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace signstim::render {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr std::uint32_t kGlbMagic = 0x46546C67;      // "glTF"
+constexpr std::uint32_t kChunkJson = 0x4E4F534A;     // "JSON"
+constexpr std::uint32_t kChunkBin = 0x004E4942;      // "BIN\0"
+// Accessors without a bufferView (all zeros, maybe sparse) allocate `count` elements; a
+// count beyond this is treated as a broken file rather than an allocation request.
+constexpr std::uint64_t kMaxUnbackedCount = 1ull << 26;
+
+std::uint32_t readU32(const std::string& bytes, std::size_t offset) {
+    std::uint32_t v = 0;
+    std::memcpy(&v, bytes.data() + offset, 4);  // glb is little-endian, as is every target
+    return v;
+}
+
+std::string at(const std::string& array, std::size_t i) {
+    return array + "[" + std::to_string(i) + "]";
+}
+
+int componentCount(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR: return 1;
+        case TINYGLTF_TYPE_VEC2: return 2;
+        case TINYGLTF_TYPE_VEC3: return 3;
+        case TINYGLTF_TYPE_VEC4: return 4;
+        case TINYGLTF_TYPE_MAT2: return 4;
+        case TINYGLTF_TYPE_MAT3: return 9;
+        case TINYGLTF_TYPE_MAT4: return 16;
+        default: return 0;
+    }
+}
+
+int componentSize(int componentType) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+        default: return 0;
+    }
+}
+
+const char* typeName(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+        case TINYGLTF_TYPE_VEC2: return "VEC2";
+        case TINYGLTF_TYPE_VEC3: return "VEC3";
+        case TINYGLTF_TYPE_VEC4: return "VEC4";
+        case TINYGLTF_TYPE_MAT2: return "MAT2";
+        case TINYGLTF_TYPE_MAT3: return "MAT3";
+        case TINYGLTF_TYPE_MAT4: return "MAT4";
+        default: return "?";
+    }
+}
+
+// Images inside bufferViews are decoded after validation (tinygltf would hand the decoder a
+// pointer computed from unchecked offsets); URI images arrive as complete byte vectors.
+bool deferBufferViewImages(tinygltf::Image* image, const int index, std::string* err,
+                           std::string* warn, int width, int height, const unsigned char* bytes,
+                           int size, void*) {
+    if (image->bufferView >= 0) return true;
+    return tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr);
+}
+
+struct ByteRange {
+    const std::uint8_t* data = nullptr;  // first element; null: accessor without bufferView
+    std::size_t stride = 0;
+};
+
+class Loader {
+public:
+    Loader(fs::path path, std::vector<std::string>* warnings)
+        : path_(std::move(path)), file_(path_.string()), warnings_(warnings) {}
+
+    Scene load() {
+        readFile();
+        parseContainer();
+        precheckJson();
+        parseWithTinyGltf();
+        validateBuffersAndViews();
+        Scene scene;
+        scene.sourceName = file_;
+        convertImages(scene);
+        convertSamplersAndTextures(scene);
+        convertMaterials(scene);
+        convertNodes(scene);
+        convertMeshes(scene);
+        convertSkins(scene);
+        checkSkinnedJoints(scene);
+        convertAnimations(scene);
+        return scene;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& field, const std::string& message, int line = 0) const {
+        throw InputError(file_, line, field, message);
+    }
+    void warn(const std::string& message) {
+        if (warnings_) warnings_->push_back(file_ + ": " + message);
+    }
+
+    // ---- container -----------------------------------------------------------------------
+    void readFile() {
+        std::error_code ec;
+        const auto status = fs::status(path_, ec);
+        if (ec || !fs::exists(status)) fail("", "file not found");
+        if (fs::is_directory(status)) fail("", "is a directory, expected a .gltf or .glb file");
+        if (!fs::is_regular_file(status)) fail("", "is not a regular file");
+        std::ifstream in(path_, std::ios::binary);
+        if (!in) fail("", "cannot open for reading");
+        std::ostringstream content;
+        content << in.rdbuf();
+        if (!in && !in.eof()) fail("", "read error");
+        bytes_ = content.str();
+        if (bytes_.empty()) fail("", "file is empty");
+    }
+
+    void parseContainer() {
+        if (bytes_.size() >= 4 && readU32(bytes_, 0) == kGlbMagic) {
+            isGlb_ = true;
+            const std::size_t size = bytes_.size();
+            if (size < 20)
+                fail("", "truncated .glb: " + std::to_string(size) +
+                             " bytes, the header and first chunk header need 20");
+            const std::uint32_t version = readU32(bytes_, 4);
+            if (version != 2)
+                fail("glb.version", "unsupported GLB container version " + std::to_string(version) +
+                                        " (glTF 2.0 needs 2)");
+            const std::uint64_t length = readU32(bytes_, 8);
+            if (length > size)
+                fail("glb.length", "truncated .glb: header declares " + std::to_string(length) +
+                                       " bytes but the file has " + std::to_string(size));
+            const std::uint64_t jsonLength = readU32(bytes_, 12);
+            if (readU32(bytes_, 16) != kChunkJson) fail("glb.chunks[0]", "first chunk is not JSON");
+            if (jsonLength == 0 || 20 + jsonLength > length)
+                fail("glb.chunks[0].chunkLength",
+                     "truncated .glb: JSON chunk of " + std::to_string(jsonLength) +
+                         " bytes does not fit in the " + std::to_string(length) + "-byte file");
+            jsonText_ = bytes_.substr(20, jsonLength);
+            const std::uint64_t next = 20 + jsonLength;
+            if (next + 8 <= length) {
+                const std::uint64_t binLength = readU32(bytes_, next);
+                if (readU32(bytes_, next + 4) == kChunkBin) {
+                    if (next + 8 + binLength > length)
+                        fail("glb.chunks[1].chunkLength",
+                             "truncated .glb: BIN chunk of " + std::to_string(binLength) +
+                                 " bytes does not fit in the " + std::to_string(length) + "-byte file");
+                    hasBin_ = true;
+                    binLength_ = binLength;
+                }
+            } else if (next != length) {
+                fail("glb.length", "truncated .glb: " + std::to_string(length - next) +
+                                       " stray bytes after the JSON chunk");
+            }
+        } else {
+            jsonText_ = bytes_;
+        }
+        try {
+            root_ = json::parse(jsonText_);
+        } catch (const json::parse_error& e) {
+            int line = 0;
+            if (!isGlb_) {
+                const std::size_t end = std::min<std::size_t>(e.byte, jsonText_.size());
+                line = 1 + static_cast<int>(std::count(jsonText_.begin(),
+                                                       jsonText_.begin() + static_cast<long>(end), '\n'));
+            }
+            fail("", "not a glTF file: invalid JSON at byte " + std::to_string(e.byte) +
+                         (isGlb_ ? " of the JSON chunk" : ""), line);
+        }
+        if (!root_.is_object()) fail("", "not a glTF file: the JSON top level is not an object");
+        const auto asset = root_.find("asset");
+        if (asset == root_.end() || !asset->is_object()) fail("asset", "missing (not a glTF 2.0 file?)");
+        const auto version = asset->find("version");
+        if (version == asset->end() || !version->is_string() ||
+            version->get<std::string>().rfind("2.", 0) != 0)
+            fail("asset.version", "not a glTF 2.x file (version must be \"2.0\")");
+    }
+
+    // ---- JSON-level checks: every index reference in range, declared sizes plausible -------
+    std::size_t arraySize(const char* name) const {
+        const auto it = root_.find(name);
+        return it != root_.end() && it->is_array() ? it->size() : 0;
+    }
+
+    const json& array(const char* name) {
+        static const json empty = json::array();
+        const auto it = root_.find(name);
+        if (it == root_.end()) return empty;
+        if (!it->is_array()) fail(name, "must be an array");
+        for (std::size_t i = 0; i < it->size(); ++i)
+            if (!(*it)[i].is_object()) fail(at(name, i), "must be an object");
+        return *it;
+    }
+
+    void checkIndex(const json& object, const char* key, const char* target, std::size_t count,
+                    const std::string& field, bool required = false) {
+        const auto it = object.find(key);
+        if (it == object.end()) {
+            if (required) fail(field + "." + key, "is required");
+            return;
+        }
+        checkIndexValue(*it, target, count, field + "." + key);
+    }
+    void checkIndexValue(const json& value, const char* target, std::size_t count,
+                         const std::string& field) {
+        if (!value.is_number_integer() || value.get<std::int64_t>() < 0)
+            fail(field, "must be a non-negative integer index into " + std::string(target));
+        const auto index = value.get<std::uint64_t>();
+        if (index >= count)
+            fail(field, "index " + std::to_string(index) + " out of range: " + target + " has " +
+                            std::to_string(count) + " entr" + (count == 1 ? "y" : "ies"));
+    }
+    void checkIndexArray(const json& object, const char* key, const char* target, std::size_t count,
+                         const std::string& field) {
+        const auto it = object.find(key);
+        if (it == object.end()) return;
+        if (!it->is_array()) fail(field + "." + key, "must be an array");
+        for (std::size_t i = 0; i < it->size(); ++i)
+            checkIndexValue((*it)[i], target, count, at(field + "." + key, i));
+    }
+    void checkTextureInfo(const json& parent, const char* key, const std::string& field) {
+        const auto it = parent.find(key);
+        if (it == parent.end()) return;
+        if (!it->is_object()) fail(field + "." + key, "must be an object");
+        checkIndex(*it, "index", "textures", arraySize("textures"), field + "." + key, true);
+    }
+    std::uint64_t positiveInteger(const json& object, const char* key, const std::string& field) {
+        const auto it = object.find(key);
+        if (it == object.end()) fail(field + "." + key, "is required");
+        if (!it->is_number_integer() || it->get<std::int64_t>() < 1)
+            fail(field + "." + key, "must be a positive integer");
+        return it->get<std::uint64_t>();
+    }
+
+    void precheckJson() {
+        const std::size_t nodes = arraySize("nodes"), meshes = arraySize("meshes"),
+                          accessors = arraySize("accessors"), views = arraySize("bufferViews"),
+                          buffers = arraySize("buffers"), skins = arraySize("skins"),
+                          materials = arraySize("materials"), textures = arraySize("textures"),
+                          images = arraySize("images"), samplers = arraySize("samplers"),
+                          scenes = arraySize("scenes"), cameras = arraySize("cameras");
+        if (root_.contains("scene")) checkIndexValue(root_["scene"], "scenes", scenes, "scene");
+        const json& sceneArray = array("scenes");
+        for (std::size_t i = 0; i < sceneArray.size(); ++i)
+            checkIndexArray(sceneArray[i], "nodes", "nodes", nodes, at("scenes", i));
+        const json& nodeArray = array("nodes");
+        for (std::size_t i = 0; i < nodeArray.size(); ++i) {
+            const std::string f = at("nodes", i);
+            checkIndexArray(nodeArray[i], "children", "nodes", nodes, f);
+            checkIndex(nodeArray[i], "mesh", "meshes", meshes, f);
+            checkIndex(nodeArray[i], "skin", "skins", skins, f);
+            checkIndex(nodeArray[i], "camera", "cameras", cameras, f);
+        }
+        const json& meshArray = array("meshes");
+        for (std::size_t m = 0; m < meshArray.size(); ++m) {
+            const auto prims = meshArray[m].find("primitives");
+            if (prims == meshArray[m].end() || !prims->is_array() || prims->empty())
+                fail(at("meshes", m) + ".primitives", "must be a non-empty array");
+            for (std::size_t p = 0; p < prims->size(); ++p) {
+                const json& prim = (*prims)[p];
+                const std::string f = at(at("meshes", m) + ".primitives", p);
+                if (!prim.is_object()) fail(f, "must be an object");
+                const auto attributes = prim.find("attributes");
+                if (attributes == prim.end() || !attributes->is_object())
+                    fail(f + ".attributes", "must be an object");
+                for (const auto& [name, value] : attributes->items())
+                    checkIndexValue(value, "accessors", accessors, f + ".attributes." + name);
+                checkIndex(prim, "indices", "accessors", accessors, f);
+                checkIndex(prim, "material", "materials", materials, f);
+                if (const auto targets = prim.find("targets"); targets != prim.end() && targets->is_array())
+                    for (std::size_t t = 0; t < targets->size(); ++t)
+                        if ((*targets)[t].is_object())
+                            for (const auto& [name, value] : (*targets)[t].items())
+                                checkIndexValue(value, "accessors", accessors,
+                                                at(f + ".targets", t) + "." + name);
+            }
+        }
+        const json& accessorArray = array("accessors");
+        for (std::size_t i = 0; i < accessorArray.size(); ++i) {
+            const std::string f = at("accessors", i);
+            checkIndex(accessorArray[i], "bufferView", "bufferViews", views, f);
+            positiveInteger(accessorArray[i], "count", f);
+            if (const auto sparse = accessorArray[i].find("sparse"); sparse != accessorArray[i].end()) {
+                if (!sparse->is_object()) fail(f + ".sparse", "must be an object");
+                for (const char* part : {"indices", "values"}) {
+                    const auto it = sparse->find(part);
+                    if (it == sparse->end() || !it->is_object())
+                        fail(f + ".sparse." + part, "is required");
+                    checkIndex(*it, "bufferView", "bufferViews", views, f + ".sparse." + part, true);
+                }
+                positiveInteger(*sparse, "count", f + ".sparse");
+            }
+        }
+        const json& viewArray = array("bufferViews");
+        for (std::size_t i = 0; i < viewArray.size(); ++i) {
+            checkIndex(viewArray[i], "buffer", "buffers", buffers, at("bufferViews", i), true);
+            positiveInteger(viewArray[i], "byteLength", at("bufferViews", i));
+        }
+        const json& bufferArray = array("buffers");
+        for (std::size_t i = 0; i < bufferArray.size(); ++i) precheckBuffer(bufferArray[i], i);
+        const json& skinArray = array("skins");
+        for (std::size_t i = 0; i < skinArray.size(); ++i) {
+            const std::string f = at("skins", i);
+            const auto joints = skinArray[i].find("joints");
+            if (joints == skinArray[i].end() || !joints->is_array() || joints->empty())
+                fail(f + ".joints", "must be a non-empty array of node indices");
+            checkIndexArray(skinArray[i], "joints", "nodes", nodes, f);
+            checkIndex(skinArray[i], "skeleton", "nodes", nodes, f);
+            checkIndex(skinArray[i], "inverseBindMatrices", "accessors", accessors, f);
+        }
+        const json& animationArray = array("animations");
+        for (std::size_t a = 0; a < animationArray.size(); ++a) {
+            const std::string f = at("animations", a);
+            const json& animation = animationArray[a];
+            const auto samplerList = animation.find("samplers");
+            const auto channelList = animation.find("channels");
+            if (samplerList == animation.end() || !samplerList->is_array())
+                fail(f + ".samplers", "must be an array");
+            if (channelList == animation.end() || !channelList->is_array())
+                fail(f + ".channels", "must be an array");
+            for (std::size_t s = 0; s < samplerList->size(); ++s) {
+                const json& sampler = (*samplerList)[s];
+                if (!sampler.is_object()) fail(at(f + ".samplers", s), "must be an object");
+                checkIndex(sampler, "input", "accessors", accessors, at(f + ".samplers", s), true);
+                checkIndex(sampler, "output", "accessors", accessors, at(f + ".samplers", s), true);
+            }
+            for (std::size_t c = 0; c < channelList->size(); ++c) {
+                const json& channel = (*channelList)[c];
+                const std::string cf = at(f + ".channels", c);
+                if (!channel.is_object()) fail(cf, "must be an object");
+                checkIndex(channel, "sampler", (f + ".samplers").c_str(), samplerList->size(), cf, true);
+                const auto target = channel.find("target");
+                if (target == channel.end() || !target->is_object()) fail(cf + ".target", "is required");
+                checkIndex(*target, "node", "nodes", nodes, cf + ".target");
+            }
+        }
+        const json& materialArray = array("materials");
+        for (std::size_t i = 0; i < materialArray.size(); ++i) {
+            const std::string f = at("materials", i);
+            const json& material = materialArray[i];
+            if (const auto pbr = material.find("pbrMetallicRoughness"); pbr != material.end() && pbr->is_object()) {
+                checkTextureInfo(*pbr, "baseColorTexture", f + ".pbrMetallicRoughness");
+                checkTextureInfo(*pbr, "metallicRoughnessTexture", f + ".pbrMetallicRoughness");
+            }
+            for (const char* key : {"normalTexture", "occlusionTexture", "emissiveTexture"})
+                checkTextureInfo(material, key, f);
+        }
+        const json& textureArray = array("textures");
+        for (std::size_t i = 0; i < textureArray.size(); ++i) {
+            checkIndex(textureArray[i], "source", "images", images, at("textures", i));
+            checkIndex(textureArray[i], "sampler", "samplers", samplers, at("textures", i));
+        }
+        (void)textures;
+        const json& imageArray = array("images");
+        for (std::size_t i = 0; i < imageArray.size(); ++i) {
+            const std::string f = at("images", i);
+            checkIndex(imageArray[i], "bufferView", "bufferViews", views, f);
+            const auto uri = imageArray[i].find("uri");
+            if (uri != imageArray[i].end()) {
+                if (!uri->is_string()) fail(f + ".uri", "must be a string");
+                checkExternalFile(uri->get<std::string>(), f + ".uri");
+            } else if (!imageArray[i].contains("bufferView")) {
+                fail(f, "needs either uri or bufferView");
+            }
+        }
+    }
+
+    // External file named by a uri (relative to the glTF file). Returns its size; 0 for
+    // data URIs.
+    std::uint64_t checkExternalFile(const std::string& uri, const std::string& field) {
+        if (uri.rfind("data:", 0) == 0) return 0;
+        if (uri.find("://") != std::string::npos)
+            fail(field, "remote resources are not supported: " + uri);
+        const fs::path file = path_.parent_path() / uri;
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec))
+            fail(field, "referenced file '" + file.string() + "' not found");
+        const std::uint64_t size = fs::file_size(file, ec);
+        if (ec) fail(field, "cannot read referenced file '" + file.string() + "'");
+        return size;
+    }
+
+    void precheckBuffer(const json& buffer, std::size_t i) {
+        const std::string f = at("buffers", i);
+        const std::uint64_t byteLength = positiveInteger(buffer, "byteLength", f);
+        const auto uri = buffer.find("uri");
+        if (uri == buffer.end()) {
+            if (!isGlb_ || i != 0 || !hasBin_)
+                fail(f + ".uri", "is required (only the first buffer of a .glb may use the BIN chunk)");
+            if (byteLength > binLength_)
+                fail(f + ".byteLength", "byteLength " + std::to_string(byteLength) +
+                                            " exceeds the " + std::to_string(binLength_) +
+                                            " bytes of the GLB binary chunk");
+            return;
+        }
+        if (!uri->is_string()) fail(f + ".uri", "must be a string");
+        const std::string text = uri->get<std::string>();
+        if (text.rfind("data:", 0) == 0) {
+            const std::size_t comma = text.find(',');
+            if (comma == std::string::npos || text.find(";base64", 0) > comma)
+                fail(f + ".uri", "data URI must be base64 encoded (data:...;base64,...)");
+            std::uint64_t payload = text.size() - comma - 1;
+            std::uint64_t decoded = payload / 4 * 3;
+            if (payload >= 1 && text.back() == '=') --decoded;
+            if (payload >= 2 && text[text.size() - 2] == '=') --decoded;
+            if (byteLength != decoded)
+                fail(f + ".byteLength", "byteLength " + std::to_string(byteLength) +
+                                            " does not match the " + std::to_string(decoded) +
+                                            " bytes of the embedded data URI");
+            return;
+        }
+        const std::uint64_t size = checkExternalFile(text, f + ".uri");
+        if (byteLength > size)
+            fail(f + ".byteLength", "byteLength " + std::to_string(byteLength) + " exceeds the " +
+                                        std::to_string(size) + " bytes of '" + text + "'");
+    }
+
+    void parseWithTinyGltf() {
+        tinygltf::TinyGLTF gltf;
+        gltf.SetImageLoader(deferBufferViewImages, nullptr);
+        std::string err, warn;
+        bool ok = false;
+        const std::string baseDir = path_.parent_path().string();
+        try {
+            if (isGlb_)
+                ok = gltf.LoadBinaryFromMemory(&model_, &err, &warn,
+                                               reinterpret_cast<const unsigned char*>(bytes_.data()),
+                                               static_cast<unsigned int>(bytes_.size()), baseDir);
+            else
+                ok = gltf.LoadASCIIFromString(&model_, &err, &warn, bytes_.data(),
+                                              static_cast<unsigned int>(bytes_.size()), baseDir);
+        } catch (const std::exception& e) {
+            fail("", std::string("glTF parse error: ") + e.what());
+        }
+        auto trim = [](std::string s) {
+            while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+            return s;
+        };
+        if (!ok) fail("", "glTF parse error: " + trim(err.empty() ? warn : err));
+        // tinygltf 2.7 reports the optional skins[].inverseBindMatrices as a missing required
+        // property while loading successfully: a warning, not an error.
+        for (const std::string* text : {&err, &warn}) {
+            std::istringstream lines(*text);
+            for (std::string line; std::getline(lines, line);)
+                if (!line.empty()) this->warn(line);
+        }
+    }
+
+    // ---- binary data ------------------------------------------------------------------------
+    void validateBuffersAndViews() {
+        for (std::size_t i = 0; i < model_.buffers.size(); ++i) {
+            // Size agreement was checked before loading; tinygltf may pad, never shrink.
+            if (model_.buffers[i].data.size() < static_cast<std::size_t>(root_["buffers"][i]["byteLength"].get<std::uint64_t>()))
+                fail(at("buffers", i) + ".byteLength", "declares more bytes than the buffer holds");
+        }
+        for (std::size_t i = 0; i < model_.bufferViews.size(); ++i) {
+            const tinygltf::BufferView& view = model_.bufferViews[i];
+            const std::string f = at("bufferViews", i);
+            const std::uint64_t bufferSize = model_.buffers[static_cast<std::size_t>(view.buffer)].data.size();
+            if (view.byteLength > bufferSize || view.byteOffset > bufferSize - view.byteLength)
+                fail(f + ".byteLength", "range [" + std::to_string(view.byteOffset) + ", " +
+                                            std::to_string(static_cast<std::uint64_t>(view.byteOffset) + view.byteLength) +
+                                            ") reads past the end of buffers[" + std::to_string(view.buffer) +
+                                            "] (" + std::to_string(bufferSize) + " bytes)");
+            if (view.byteStride != 0 && (view.byteStride < 4 || view.byteStride > 252 || view.byteStride % 4 != 0))
+                fail(f + ".byteStride", "must be a multiple of 4 in [4, 252], got " +
+                                            std::to_string(view.byteStride));
+        }
+    }
+
+    const std::uint8_t* viewData(int viewIndex) const {
+        const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(viewIndex)];
+        return model_.buffers[static_cast<std::size_t>(view.buffer)].data.data() + view.byteOffset;
+    }
+
+    // Checks accessor `index` completely (types, ranges, sparse part) and returns where its
+    // elements live.
+    ByteRange checkAccessor(int index) {
+        const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+        const std::string f = at("accessors", static_cast<std::size_t>(index));
+        const int components = componentCount(a.type);
+        const int size = componentSize(a.componentType);
+        if (components == 0) fail(f + ".type", "unknown accessor type");
+        if (size == 0) fail(f + ".componentType", "unknown component type " + std::to_string(a.componentType));
+        if (a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+                             a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+            fail(f + ".normalized", "only byte and short components may be normalized");
+        if (size < 4 && a.type >= TINYGLTF_TYPE_MAT2 && a.type <= TINYGLTF_TYPE_MAT4)
+            fail(f + ".componentType", "matrices of 8/16-bit components are not supported");
+        const std::uint64_t elementSize = static_cast<std::uint64_t>(components) * size;
+        const std::uint64_t count = a.count;
+        ByteRange range;
+        if (a.bufferView >= 0) {
+            const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+            const std::uint64_t stride = view.byteStride ? view.byteStride : elementSize;
+            if (stride < elementSize)
+                fail(f + ".bufferView", "bufferViews[" + std::to_string(a.bufferView) + "].byteStride " +
+                                            std::to_string(stride) + " is smaller than one " +
+                                            typeName(a.type) + " element (" + std::to_string(elementSize) + " bytes)");
+            if (a.byteOffset % static_cast<std::size_t>(size) != 0)
+                fail(f + ".byteOffset", "must be a multiple of the component size");
+            // Last byte read: byteOffset + stride * (count - 1) + elementSize, overflow-safe.
+            const std::uint64_t viewLength = view.byteLength;
+            const bool fits = a.byteOffset <= viewLength && count - 1 <= (viewLength - a.byteOffset) / stride &&
+                              a.byteOffset + stride * (count - 1) + elementSize <= viewLength;
+            if (!fits)
+                fail(f + ".count", "count " + std::to_string(count) + " of " + typeName(a.type) +
+                                       " at byteOffset " + std::to_string(a.byteOffset) +
+                                       " reads past the end of bufferViews[" + std::to_string(a.bufferView) +
+                                       "] (" + std::to_string(viewLength) + " bytes)");
+            range.data = viewData(a.bufferView) + a.byteOffset;
+            range.stride = static_cast<std::size_t>(stride);
+        } else if (count > kMaxUnbackedCount) {
+            fail(f + ".count", "count " + std::to_string(count) + " without a bufferView is implausibly large");
+        }
+        if (a.sparse.isSparse) {
+            const std::string sf = f + ".sparse";
+            const std::uint64_t sparseCount = static_cast<std::uint64_t>(a.sparse.count);
+            if (a.sparse.count < 1 || sparseCount > count)
+                fail(sf + ".count", "must be in [1, accessor count " + std::to_string(count) + "]");
+            const int indexSize = componentSize(a.sparse.indices.componentType);
+            if (a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
+                a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_SHORT ||
+                a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || indexSize == 0)
+                fail(sf + ".indices.componentType", "must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+            auto checkPart = [&](const char* part, int view, int offset, std::uint64_t bytesEach) {
+                const std::uint64_t length = model_.bufferViews[static_cast<std::size_t>(view)].byteLength;
+                if (offset < 0 || static_cast<std::uint64_t>(offset) > length ||
+                    sparseCount > (length - static_cast<std::uint64_t>(offset)) / bytesEach)
+                    fail(sf + "." + part, std::to_string(sparseCount) + " entries at byteOffset " +
+                                              std::to_string(offset) + " read past the end of bufferViews[" +
+                                              std::to_string(view) + "] (" + std::to_string(length) + " bytes)");
+            };
+            checkPart("indices", a.sparse.indices.bufferView, a.sparse.indices.byteOffset,
+                      static_cast<std::uint64_t>(indexSize));
+            checkPart("values", a.sparse.values.bufferView, a.sparse.values.byteOffset, elementSize);
+        }
+        return range;
+    }
+
+    static double readComponent(const std::uint8_t* p, int componentType, bool normalized) {
+        switch (componentType) {
+            case TINYGLTF_COMPONENT_TYPE_BYTE: {
+                std::int8_t v;
+                std::memcpy(&v, p, 1);
+                return normalized ? std::max(v / 127.0, -1.0) : v;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+                std::uint8_t v;
+                std::memcpy(&v, p, 1);
+                return normalized ? v / 255.0 : v;
+            }
+            case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                std::int16_t v;
+                std::memcpy(&v, p, 2);
+                return normalized ? std::max(v / 32767.0, -1.0) : v;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                std::uint16_t v;
+                std::memcpy(&v, p, 2);
+                return normalized ? v / 65535.0 : v;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+                std::uint32_t v;
+                std::memcpy(&v, p, 4);
+                return v;
+            }
+            default: {
+                float v;
+                std::memcpy(&v, p, 4);
+                return v;
+            }
+        }
+    }
+
+    // All components of accessor `index` (count * components values), sparse substitution
+    // applied, normalized integers mapped to [0,1]/[-1,1]. Refuses types outside `types` and
+    // component types outside `componentTypes` (empty: any), and non-finite floats.
+    std::vector<double> readAccessor(int index, std::initializer_list<int> types,
+                                     std::initializer_list<int> componentTypes, const std::string& usedAs) {
+        const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+        const std::string f = at("accessors", static_cast<std::size_t>(index));
+        if (std::find(types.begin(), types.end(), a.type) == types.end()) {
+            std::string allowed;
+            for (int t : types) allowed += std::string(allowed.empty() ? "" : " or ") + typeName(t);
+            fail(f + ".type", std::string(typeName(a.type)) + " cannot be used as " + usedAs + " (needs " + allowed + ")");
+        }
+        if (componentTypes.size() &&
+            std::find(componentTypes.begin(), componentTypes.end(), a.componentType) == componentTypes.end())
+            fail(f + ".componentType", "component type " + std::to_string(a.componentType) +
+                                           " cannot be used as " + usedAs);
+        const ByteRange range = checkAccessor(index);
+        const int components = componentCount(a.type);
+        const int size = componentSize(a.componentType);
+        std::vector<double> values(a.count * static_cast<std::size_t>(components), 0.0);
+        auto readElement = [&](const std::uint8_t* p, std::size_t element) {
+            for (int c = 0; c < components; ++c)
+                values[element * components + c] = readComponent(p + c * size, a.componentType, a.normalized);
+        };
+        if (range.data)
+            for (std::size_t e = 0; e < a.count; ++e) readElement(range.data + e * range.stride, e);
+        if (a.sparse.isSparse) {
+            const std::uint8_t* indices = viewData(a.sparse.indices.bufferView) + a.sparse.indices.byteOffset;
+            const std::uint8_t* sparseValues = viewData(a.sparse.values.bufferView) + a.sparse.values.byteOffset;
+            const int indexSize = componentSize(a.sparse.indices.componentType);
+            for (int s = 0; s < a.sparse.count; ++s) {
+                const auto target = static_cast<std::uint64_t>(
+                    readComponent(indices + static_cast<std::size_t>(s) * indexSize, a.sparse.indices.componentType, false));
+                if (target >= a.count)
+                    fail(f + ".sparse.indices", "index " + std::to_string(target) + " out of range (count " +
+                                                    std::to_string(a.count) + ")");
+                readElement(sparseValues + static_cast<std::size_t>(s) * components * size, static_cast<std::size_t>(target));
+            }
+        }
+        for (std::size_t i = 0; i < values.size(); ++i)
+            if (!std::isfinite(values[i]))
+                fail(f, "element " + std::to_string(i / components) + " of " + usedAs + " is not finite (NaN or Inf)");
+        return values;
+    }
+
+    // ---- scene conversion -------------------------------------------------------------------
+    void convertImages(Scene& scene) {
+        for (std::size_t i = 0; i < model_.images.size(); ++i) {
+            tinygltf::Image& image = model_.images[i];
+            const std::string f = at("images", i);
+            if (image.bufferView >= 0 && image.image.empty()) {
+                const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(image.bufferView)];
+                if (view.byteLength > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+                    fail(f + ".bufferView", "image data too large");
+                std::string err, warnText;
+                if (!tinygltf::LoadImageData(&image, static_cast<int>(i), &err, &warnText, 0, 0,
+                                             viewData(image.bufferView), static_cast<int>(view.byteLength), nullptr))
+                    fail(f, "cannot decode image: " + err);
+            }
+            if (image.image.empty() || image.width < 1 || image.height < 1)
+                fail(f, "image could not be decoded (PNG or JPEG expected)");
+            ImageData out;
+            out.name = image.name;
+            out.width = static_cast<std::uint32_t>(image.width);
+            out.height = static_cast<std::uint32_t>(image.height);
+            const std::size_t pixels = static_cast<std::size_t>(out.width) * out.height;
+            const int channels = image.component;
+            const int bytesPerChannel = image.bits == 16 ? 2 : 1;
+            if (channels < 1 || channels > 4 ||
+                image.image.size() < pixels * static_cast<std::size_t>(channels * bytesPerChannel))
+                fail(f, "decoded image has an unexpected layout");
+            out.rgba.resize(pixels * 4);
+            for (std::size_t p = 0; p < pixels; ++p) {
+                std::uint8_t c[4] = {0, 0, 0, 255};
+                for (int k = 0; k < channels; ++k) {
+                    const std::size_t at = (p * channels + k) * bytesPerChannel;
+                    // 16-bit: keep the high byte (native little-endian from stb).
+                    c[k] = bytesPerChannel == 2 ? image.image[at + 1] : image.image[at];
+                }
+                if (channels == 1 || channels == 2) {  // grey (+ alpha)
+                    const std::uint8_t alpha = channels == 2 ? c[1] : 255;
+                    c[1] = c[2] = c[0];
+                    c[3] = alpha;
+                }
+                std::memcpy(&out.rgba[p * 4], c, 4);
+            }
+            scene.images.push_back(std::move(out));
+        }
+    }
+
+    void convertSamplersAndTextures(Scene& scene) {
+        for (std::size_t i = 0; i < model_.textures.size(); ++i) {
+            const tinygltf::Texture& texture = model_.textures[i];
+            Texture out;
+            out.image = texture.source;
+            if (out.image < 0) warn(at("textures", i) + " has no source image (extension?); it is ignored");
+            if (texture.sampler >= 0) {
+                const tinygltf::Sampler& s = model_.samplers[static_cast<std::size_t>(texture.sampler)];
+                const std::string f = at("samplers", static_cast<std::size_t>(texture.sampler));
+                auto wrap = [&](int mode, const char* key) {
+                    switch (mode) {
+                        case TINYGLTF_TEXTURE_WRAP_REPEAT: return Wrap::Repeat;
+                        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::ClampToEdge;
+                        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::MirroredRepeat;
+                        default: fail(f + "." + key, "unknown wrap mode " + std::to_string(mode));
+                    }
+                };
+                out.wrapS = wrap(s.wrapS, "wrapS");
+                out.wrapT = wrap(s.wrapT, "wrapT");
+                if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out.magFilter = Filter::Nearest;
+                else if (s.magFilter != -1 && s.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR)
+                    fail(f + ".magFilter", "unknown filter " + std::to_string(s.magFilter));
+                switch (s.minFilter) {
+                    case -1: break;
+                    case TINYGLTF_TEXTURE_FILTER_NEAREST: out.minFilter = Filter::Nearest; out.mipmaps = false; break;
+                    case TINYGLTF_TEXTURE_FILTER_LINEAR: out.mipmaps = false; break;
+                    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+                    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: out.minFilter = Filter::Nearest; break;
+                    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+                    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: break;
+                    default: fail(f + ".minFilter", "unknown filter " + std::to_string(s.minFilter));
+                }
+            }
+            scene.textures.push_back(out);
+        }
+    }
+
+    static bool finite(const std::vector<double>& v) {
+        return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+    }
+
+    void convertMaterials(Scene& scene) {
+        for (std::size_t i = 0; i < model_.materials.size(); ++i) {
+            const tinygltf::Material& m = model_.materials[i];
+            const std::string f = at("materials", i);
+            Material out;
+            out.name = m.name;
+            const auto& pbr = m.pbrMetallicRoughness;
+            if (pbr.baseColorFactor.size() != 4 || !finite(pbr.baseColorFactor))
+                fail(f + ".pbrMetallicRoughness.baseColorFactor", "must be 4 finite numbers");
+            out.baseColorFactor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
+                                            pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+            auto unit = [&](double v, const std::string& field) {
+                if (!(v >= 0.0 && v <= 1.0)) fail(field, "must be in [0, 1]");
+                return static_cast<float>(v);
+            };
+            out.metallicFactor = unit(pbr.metallicFactor, f + ".pbrMetallicRoughness.metallicFactor");
+            out.roughnessFactor = unit(pbr.roughnessFactor, f + ".pbrMetallicRoughness.roughnessFactor");
+            out.baseColorTexture = pbr.baseColorTexture.index;
+            out.metallicRoughnessTexture = pbr.metallicRoughnessTexture.index;
+            if (pbr.baseColorTexture.texCoord != 0 || pbr.metallicRoughnessTexture.texCoord != 0)
+                warn(f + " uses TEXCOORD_1+; only TEXCOORD_0 is supported");
+            if (m.emissiveFactor.size() != 3 || !finite(m.emissiveFactor))
+                fail(f + ".emissiveFactor", "must be 3 finite numbers");
+            out.emissiveFactor = glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
+            if (m.alphaMode == "OPAQUE" || m.alphaMode.empty()) out.alphaMode = AlphaMode::Opaque;
+            else if (m.alphaMode == "MASK") out.alphaMode = AlphaMode::Mask;
+            else if (m.alphaMode == "BLEND") out.alphaMode = AlphaMode::Blend;
+            else fail(f + ".alphaMode", "must be OPAQUE, MASK or BLEND, got \"" + m.alphaMode + "\"");
+            if (!(m.alphaCutoff >= 0.0) || !std::isfinite(m.alphaCutoff))
+                fail(f + ".alphaCutoff", "must be a non-negative number");
+            out.alphaCutoff = static_cast<float>(m.alphaCutoff);
+            out.doubleSided = m.doubleSided;
+            scene.materials.push_back(out);
+        }
+    }
+
+    void convertNodes(Scene& scene) {
+        const std::size_t count = model_.nodes.size();
+        scene.nodes.resize(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const tinygltf::Node& n = model_.nodes[i];
+            const std::string f = at("nodes", i);
+            Node& out = scene.nodes[i];
+            out.name = n.name;
+            out.mesh = n.mesh;
+            out.skin = n.skin;
+            out.children = n.children;
+            auto vec = [&](const std::vector<double>& v, std::size_t size, const char* key) {
+                if (v.empty()) return false;
+                if (v.size() != size || !finite(v))
+                    fail(f + "." + key, "must be " + std::to_string(size) + " finite numbers");
+                return true;
+            };
+            if (vec(n.translation, 3, "translation"))
+                out.rest.translation = glm::vec3(n.translation[0], n.translation[1], n.translation[2]);
+            if (vec(n.scale, 3, "scale")) out.rest.scale = glm::vec3(n.scale[0], n.scale[1], n.scale[2]);
+            if (vec(n.rotation, 4, "rotation")) {
+                const glm::quat q(static_cast<float>(n.rotation[3]), static_cast<float>(n.rotation[0]),
+                                  static_cast<float>(n.rotation[1]), static_cast<float>(n.rotation[2]));
+                if (glm::length(q) < 1e-6f) fail(f + ".rotation", "quaternion has zero length");
+                out.rest.rotation = glm::normalize(q);
+            }
+            if (vec(n.matrix, 16, "matrix")) {
+                glm::mat4 m;
+                for (int c = 0; c < 4; ++c)
+                    for (int r = 0; r < 4; ++r) m[c][r] = static_cast<float>(n.matrix[static_cast<std::size_t>(c * 4 + r)]);
+                out.restMatrix = m;
+                out.rest = decompose(m);
+            }
+        }
+        // One parent per node, no cycles.
+        for (std::size_t i = 0; i < count; ++i)
+            for (int child : scene.nodes[i].children) {
+                Node& c = scene.nodes[static_cast<std::size_t>(child)];
+                if (c.parent >= 0 || child == static_cast<int>(i))
+                    fail(at("nodes", i) + ".children",
+                         "nodes[" + std::to_string(child) + "] " +
+                             (child == static_cast<int>(i) ? std::string("is its own child")
+                                                           : "already has parent nodes[" + std::to_string(c.parent) + "]") +
+                             " (the node graph must be a forest)");
+                c.parent = static_cast<int>(i);
+            }
+        std::vector<char> reached(count, 0);
+        std::vector<int> stack;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (scene.nodes[i].parent >= 0) continue;
+            stack.push_back(static_cast<int>(i));
+            while (!stack.empty()) {
+                const int n = stack.back();
+                stack.pop_back();
+                reached[static_cast<std::size_t>(n)] = 1;
+                for (int c : scene.nodes[static_cast<std::size_t>(n)].children) stack.push_back(c);
+            }
+        }
+        for (std::size_t i = 0; i < count; ++i)
+            if (!reached[i]) fail(at("nodes", i) + ".children", "node is part of a cycle in the node graph");
+
+        if (!model_.scenes.empty()) {
+            const std::size_t sceneIndex = model_.defaultScene >= 0 ? static_cast<std::size_t>(model_.defaultScene) : 0;
+            scene.roots = model_.scenes[sceneIndex].nodes;
+            for (int r : scene.roots)
+                if (scene.nodes[static_cast<std::size_t>(r)].parent >= 0)
+                    fail(at("scenes", sceneIndex) + ".nodes", "nodes[" + std::to_string(r) + "] is not a root node");
+        } else {
+            for (std::size_t i = 0; i < count; ++i)
+                if (scene.nodes[i].parent < 0) scene.roots.push_back(static_cast<int>(i));
+        }
+    }
+
+    static Trs decompose(const glm::mat4& m) {
+        Trs trs;
+        trs.translation = glm::vec3(m[3]);
+        glm::vec3 columns[3] = {glm::vec3(m[0]), glm::vec3(m[1]), glm::vec3(m[2])};
+        trs.scale = glm::vec3(glm::length(columns[0]), glm::length(columns[1]), glm::length(columns[2]));
+        if (glm::determinant(glm::mat3(m)) < 0.0f) trs.scale.x = -trs.scale.x;
+        glm::mat3 rotation(1.0f);
+        for (int c = 0; c < 3; ++c)
+            if (trs.scale[c] != 0.0f) rotation[c] = columns[c] / trs.scale[c];
+        trs.rotation = glm::normalize(glm::quat_cast(rotation));
+        return trs;
+    }
+
+    void convertMeshes(Scene& scene) {
+        using T = int;
+        constexpr T kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT, kU8 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                    kU16 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, kU32 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                    kI8 = TINYGLTF_COMPONENT_TYPE_BYTE, kI16 = TINYGLTF_COMPONENT_TYPE_SHORT;
+        for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
+            Mesh mesh;
+            mesh.name = model_.meshes[m].name;
+            for (std::size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) {
+                const tinygltf::Primitive& prim = model_.meshes[m].primitives[p];
+                const std::string f = at(at("meshes", m) + ".primitives", p);
+                if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+                    prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+                    if (prim.mode < 0 || prim.mode > 6) fail(f + ".mode", "unknown primitive mode " + std::to_string(prim.mode));
+                    warn(f + ": points/lines primitive skipped (only triangles are drawn)");
+                    continue;
+                }
+                if (!prim.targets.empty()) warn(f + ": morph targets ignored");
+                const auto attribute = [&](const char* name) {
+                    const auto it = prim.attributes.find(name);
+                    return it == prim.attributes.end() ? -1 : it->second;
+                };
+                const int positionIndex = attribute("POSITION");
+                if (positionIndex < 0) fail(f + ".attributes.POSITION", "is required");
+                const std::vector<double> positions =
+                    readAccessor(positionIndex, {TINYGLTF_TYPE_VEC3}, {}, f + ".attributes.POSITION");
+                const std::size_t vertexCount = positions.size() / 3;
+                Primitive out;
+                out.material = prim.material;
+                out.vertices.resize(vertexCount);
+                for (std::size_t v = 0; v < vertexCount; ++v)
+                    out.vertices[v].position = glm::vec3(positions[v * 3], positions[v * 3 + 1], positions[v * 3 + 2]);
+
+                auto readAttribute = [&](const char* name, int type, std::initializer_list<int> componentTypes) {
+                    const int index = attribute(name);
+                    if (index < 0) return std::vector<double>{};
+                    std::vector<double> values = readAccessor(index, {type}, componentTypes,
+                                                              f + ".attributes." + name);
+                    const std::size_t count = model_.accessors[static_cast<std::size_t>(index)].count;
+                    if (count != vertexCount)
+                        fail(f + ".attributes." + name, "has " + std::to_string(count) +
+                                                            " elements but POSITION has " + std::to_string(vertexCount));
+                    return values;
+                };
+                const std::vector<double> normals = readAttribute("NORMAL", TINYGLTF_TYPE_VEC3, {kFloat});
+                const std::vector<double> uvs = readAttribute("TEXCOORD_0", TINYGLTF_TYPE_VEC2, {kFloat, kU8, kU16});
+                const std::vector<double> joints = readAttribute("JOINTS_0", TINYGLTF_TYPE_VEC4, {kU8, kU16});
+                const std::vector<double> weights =
+                    readAttribute("WEIGHTS_0", TINYGLTF_TYPE_VEC4, {kFloat, kU8, kU16});
+                (void)kI8;
+                (void)kI16;
+                for (std::size_t v = 0; v < vertexCount && !uvs.empty(); ++v)
+                    out.vertices[v].uv = glm::vec2(uvs[v * 2], uvs[v * 2 + 1]);
+                if (joints.empty() != weights.empty())
+                    warn(f + ": JOINTS_0 without WEIGHTS_0 (or the reverse); drawn unskinned");
+                if (!joints.empty() && !weights.empty()) {
+                    out.skinned = true;
+                    bool zeroWeights = false;
+                    for (std::size_t v = 0; v < vertexCount; ++v) {
+                        Vertex& vertex = out.vertices[v];
+                        glm::vec4 w(weights[v * 4], weights[v * 4 + 1], weights[v * 4 + 2], weights[v * 4 + 3]);
+                        if (glm::any(glm::lessThan(w, glm::vec4(0.0f))))
+                            fail(f + ".attributes.WEIGHTS_0", "vertex " + std::to_string(v) + " has a negative weight");
+                        const float sum = w.x + w.y + w.z + w.w;
+                        if (sum <= 1e-6f) {
+                            zeroWeights = true;
+                            w = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+                        } else {
+                            w /= sum;
+                        }
+                        vertex.weights = w;
+                        for (int k = 0; k < 4; ++k)
+                            vertex.joints[k] = static_cast<std::uint32_t>(joints[v * 4 + static_cast<std::size_t>(k)]);
+                    }
+                    if (zeroWeights) warn(f + ": vertices with all-zero weights bound fully to their first joint");
+                }
+
+                if (prim.indices >= 0) {
+                    const std::vector<double> indices =
+                        readAccessor(prim.indices, {TINYGLTF_TYPE_SCALAR}, {kU8, kU16, kU32}, f + ".indices");
+                    out.indices.reserve(indices.size());
+                    for (std::size_t i = 0; i < indices.size(); ++i) {
+                        if (indices[i] >= static_cast<double>(vertexCount))
+                            fail(f + ".indices", "index " + std::to_string(static_cast<std::uint64_t>(indices[i])) +
+                                                     " (element " + std::to_string(i) + ") is past the vertex count " +
+                                                     std::to_string(vertexCount));
+                        out.indices.push_back(static_cast<std::uint32_t>(indices[i]));
+                    }
+                } else {
+                    out.indices.resize(vertexCount);
+                    for (std::size_t i = 0; i < vertexCount; ++i) out.indices[i] = static_cast<std::uint32_t>(i);
+                }
+                out.indices = toTriangleList(std::move(out.indices), prim.mode, f);
+                if (normals.empty()) {
+                    computeSmoothNormals(out);
+                } else {
+                    for (std::size_t v = 0; v < vertexCount; ++v) {
+                        const glm::vec3 n(normals[v * 3], normals[v * 3 + 1], normals[v * 3 + 2]);
+                        const float length = glm::length(n);
+                        out.vertices[v].normal = length > 1e-12f ? n / length : glm::vec3(0.0f, 0.0f, 1.0f);
+                    }
+                }
+                mesh.primitives.push_back(std::move(out));
+            }
+            scene.meshes.push_back(std::move(mesh));
+        }
+    }
+
+    std::vector<std::uint32_t> toTriangleList(std::vector<std::uint32_t> indices, int mode, const std::string& f) {
+        if (mode == TINYGLTF_MODE_TRIANGLES) {
+            if (indices.size() % 3 != 0)
+                fail(f, std::to_string(indices.size()) + " indices/vertices is not a multiple of 3 (triangle list)");
+            return indices;
+        }
+        std::vector<std::uint32_t> list;
+        if (indices.size() < 3) return list;
+        for (std::size_t i = 2; i < indices.size(); ++i) {
+            if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+                // Alternate winding so every triangle keeps the strip's orientation.
+                if (i % 2 == 0) list.insert(list.end(), {indices[i - 2], indices[i - 1], indices[i]});
+                else list.insert(list.end(), {indices[i - 1], indices[i - 2], indices[i]});
+            } else {
+                list.insert(list.end(), {indices[0], indices[i - 1], indices[i]});
+            }
+        }
+        return list;
+    }
+
+    static void computeSmoothNormals(Primitive& primitive) {
+        std::vector<glm::vec3> sums(primitive.vertices.size(), glm::vec3(0.0f));
+        for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
+            const std::uint32_t a = primitive.indices[t], b = primitive.indices[t + 1], c = primitive.indices[t + 2];
+            const glm::vec3& pa = primitive.vertices[a].position;
+            // Unnormalised cross product: its length is twice the area, so big faces weigh more.
+            const glm::vec3 n = glm::cross(primitive.vertices[b].position - pa, primitive.vertices[c].position - pa);
+            sums[a] += n;
+            sums[b] += n;
+            sums[c] += n;
+        }
+        for (std::size_t v = 0; v < sums.size(); ++v) {
+            const float length = glm::length(sums[v]);
+            primitive.vertices[v].normal = length > 1e-20f ? sums[v] / length : glm::vec3(0.0f, 0.0f, 1.0f);
+        }
+    }
+
+    void convertSkins(Scene& scene) {
+        for (std::size_t i = 0; i < model_.skins.size(); ++i) {
+            const tinygltf::Skin& s = model_.skins[i];
+            const std::string f = at("skins", i);
+            Skin out;
+            out.name = s.name;
+            out.joints = s.joints;
+            out.skeleton = s.skeleton;
+            if (s.inverseBindMatrices >= 0) {
+                const std::vector<double> values = readAccessor(s.inverseBindMatrices, {TINYGLTF_TYPE_MAT4},
+                                                                {TINYGLTF_COMPONENT_TYPE_FLOAT}, f + ".inverseBindMatrices");
+                const std::size_t count = values.size() / 16;
+                if (count < out.joints.size())
+                    fail(f + ".inverseBindMatrices", "has " + std::to_string(count) + " matrices for " +
+                                                         std::to_string(out.joints.size()) + " joints");
+                for (std::size_t j = 0; j < out.joints.size(); ++j) {
+                    glm::mat4 m;
+                    for (int c = 0; c < 4; ++c)
+                        for (int r = 0; r < 4; ++r) m[c][r] = static_cast<float>(values[j * 16 + static_cast<std::size_t>(c * 4 + r)]);
+                    out.inverseBindMatrices.push_back(m);
+                }
+            } else {
+                out.inverseBindMatrices.assign(out.joints.size(), glm::mat4(1.0f));
+            }
+            scene.skins.push_back(std::move(out));
+        }
+    }
+
+    void checkSkinnedJoints(Scene& scene) {
+        for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+            const Node& node = scene.nodes[n];
+            if (node.mesh < 0 || node.skin < 0) continue;
+            const std::size_t jointCount = scene.skins[static_cast<std::size_t>(node.skin)].joints.size();
+            Mesh& mesh = scene.meshes[static_cast<std::size_t>(node.mesh)];
+            for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+                Primitive& prim = mesh.primitives[p];
+                if (!prim.skinned) continue;
+                for (std::size_t v = 0; v < prim.vertices.size(); ++v)
+                    for (int k = 0; k < 4; ++k) {
+                        std::uint32_t& joint = prim.vertices[v].joints[k];
+                        if (joint < jointCount) continue;
+                        if (prim.vertices[v].weights[k] == 0.0f) {
+                            joint = 0;  // unused influence; keep it harmless
+                            continue;
+                        }
+                        fail(at(at("meshes", static_cast<std::size_t>(node.mesh)) + ".primitives", p) +
+                                 ".attributes.JOINTS_0",
+                             "vertex " + std::to_string(v) + " uses joint " + std::to_string(joint) + " but skins[" +
+                                 std::to_string(node.skin) + "] (of nodes[" + std::to_string(n) + "]) has " +
+                                 std::to_string(jointCount) + " joints");
+                    }
+            }
+        }
+    }
+
+    void convertAnimations(Scene& scene) {
+        for (std::size_t a = 0; a < model_.animations.size(); ++a) {
+            const tinygltf::Animation& animation = model_.animations[a];
+            const std::string f = at("animations", a);
+            Animation out;
+            out.name = animation.name;
+            std::vector<int> samplerOutputType(animation.samplers.size(), 0);
+            for (std::size_t s = 0; s < animation.samplers.size(); ++s) {
+                const tinygltf::AnimationSampler& sampler = animation.samplers[s];
+                const std::string sf = at(f + ".samplers", s);
+                AnimationSampler so;
+                if (sampler.interpolation == "LINEAR" || sampler.interpolation.empty()) so.interpolation = Interpolation::Linear;
+                else if (sampler.interpolation == "STEP") so.interpolation = Interpolation::Step;
+                else if (sampler.interpolation == "CUBICSPLINE") so.interpolation = Interpolation::CubicSpline;
+                else fail(sf + ".interpolation", "must be LINEAR, STEP or CUBICSPLINE, got \"" + sampler.interpolation + "\"");
+                const std::vector<double> times = readAccessor(sampler.input, {TINYGLTF_TYPE_SCALAR},
+                                                               {TINYGLTF_COMPONENT_TYPE_FLOAT}, sf + ".input");
+                for (std::size_t k = 0; k < times.size(); ++k) {
+                    if (times[k] < 0.0) fail(sf + ".input", "key time " + std::to_string(times[k]) + " is negative");
+                    if (k > 0 && !(times[k] > times[k - 1]))
+                        fail(sf + ".input", "key times must increase strictly (key " + std::to_string(k) + ")");
+                    so.times.push_back(static_cast<float>(times[k]));
+                }
+                const tinygltf::Accessor& output = model_.accessors[static_cast<std::size_t>(sampler.output)];
+                const int width = componentCount(output.type);
+                if (output.type != TINYGLTF_TYPE_VEC3 && output.type != TINYGLTF_TYPE_VEC4 &&
+                    output.type != TINYGLTF_TYPE_SCALAR)
+                    fail(at("accessors", static_cast<std::size_t>(sampler.output)) + ".type",
+                         "animation output must be VEC3, VEC4 (or SCALAR for weights)");
+                samplerOutputType[s] = output.type;
+                const std::vector<double> values =
+                    readAccessor(sampler.output, {TINYGLTF_TYPE_SCALAR, TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {},
+                                 sf + ".output");
+                const std::size_t expected = times.size() * (so.interpolation == Interpolation::CubicSpline ? 3 : 1);
+                if (output.type != TINYGLTF_TYPE_SCALAR && output.count != expected)
+                    fail(sf + ".output", "has " + std::to_string(output.count) + " values for " +
+                                             std::to_string(times.size()) + " key times (expected " +
+                                             std::to_string(expected) + ")");
+                for (std::size_t v = 0; output.type != TINYGLTF_TYPE_SCALAR && v < output.count; ++v) {
+                    glm::vec4 value(0.0f);
+                    for (int c = 0; c < width; ++c) value[c] = static_cast<float>(values[v * width + static_cast<std::size_t>(c)]);
+                    so.values.push_back(value);
+                }
+                if (!so.times.empty()) out.durationSeconds = std::max(out.durationSeconds, so.times.back());
+                out.samplers.push_back(std::move(so));
+            }
+            std::vector<char> isRotation(animation.samplers.size(), 0);
+            for (std::size_t c = 0; c < animation.channels.size(); ++c) {
+                const tinygltf::AnimationChannel& channel = animation.channels[c];
+                const std::string cf = at(f + ".channels", c);
+                if (channel.target_node < 0) continue;  // extension-targeted channel
+                AnimationChannel co;
+                co.node = channel.target_node;
+                co.sampler = channel.sampler;
+                int needed = TINYGLTF_TYPE_VEC3;
+                if (channel.target_path == "translation") co.path = AnimationPath::Translation;
+                else if (channel.target_path == "scale") co.path = AnimationPath::Scale;
+                else if (channel.target_path == "rotation") {
+                    co.path = AnimationPath::Rotation;
+                    needed = TINYGLTF_TYPE_VEC4;
+                } else if (channel.target_path == "weights") {
+                    warn(cf + ": morph-target weights animation ignored");
+                    continue;
+                } else {
+                    fail(cf + ".target.path", "unknown path \"" + channel.target_path + "\"");
+                }
+                if (samplerOutputType[static_cast<std::size_t>(co.sampler)] != needed)
+                    fail(cf + ".sampler", "output of " + at(f + ".samplers", static_cast<std::size_t>(co.sampler)) +
+                                              " is not " + typeName(needed) + " as " + channel.target_path + " needs");
+                if (scene.nodes[static_cast<std::size_t>(co.node)].restMatrix)
+                    fail(cf + ".target.node", "animated nodes must not use `matrix` (glTF 2.0 §3.7.3.2)");
+                if (co.path == AnimationPath::Rotation) isRotation[static_cast<std::size_t>(co.sampler)] = 1;
+                out.channels.push_back(co);
+            }
+            // Rotation keys are unit quaternions; normalise the values (not cubic tangents).
+            for (std::size_t s = 0; s < out.samplers.size(); ++s) {
+                if (!isRotation[s]) continue;
+                AnimationSampler& sampler = out.samplers[s];
+                const bool cubic = sampler.interpolation == Interpolation::CubicSpline;
+                for (std::size_t v = cubic ? 1 : 0; v < sampler.values.size(); v += cubic ? 3 : 1) {
+                    const float length = glm::length(sampler.values[v]);
+                    if (length < 1e-6f)
+                        fail(at(f + ".samplers", s) + ".output", "rotation key " + std::to_string(cubic ? v / 3 : v) +
+                                                                     " is a zero quaternion");
+                    sampler.values[v] /= length;
+                }
+            }
+            scene.animations.push_back(std::move(out));
+        }
+    }
+
+    fs::path path_;
+    std::string file_;
+    std::vector<std::string>* warnings_;
+    std::string bytes_, jsonText_;
+    bool isGlb_ = false, hasBin_ = false;
+    std::uint64_t binLength_ = 0;
+    json root_;
+    tinygltf::Model model_;
+};
+
+}  // namespace
+
+Scene loadGltf(const fs::path& path, std::vector<std::string>* warnings) {
+    return Loader(path, warnings).load();
+}
+
+}  // namespace signstim::render
