@@ -30,7 +30,8 @@ struct Lighting {
     // evenly lit, no harsh shadows.
     glm::vec3 keyDirection{-0.3f, -0.5f, -1.0f};  // direction light travels (world)
     float keyIntensity = 2.2f;
-    float fillIntensity = 0.9f;
+    float fillIntensity = 0.9f;   // from the other side, lower
+    float rimIntensity = 0.8f;    // from behind-above: separates the signer from the background
     float ambient = 0.35f;
 };
 
@@ -62,17 +63,24 @@ public:
     // Uploads a scene (meshes, textures, materials) once; returns its handle for View::scene.
     int addScene(const Scene& scene);
 
-    // Draws `frame` and reads it back into `out` (synchronous).
+    // Draws `frame` and reads it back into `out` (synchronous; no frame may be in flight).
+    // Invalid frames (unknown scene handle, pose of the wrong size, more views than cells,
+    // eye == target) throw InputError.
     void render(const Frame& frame, Image& out);
 
     // Pipelined use: submit() starts drawing and returns at once; retrieve() waits for the
-    // oldest submitted frame. At most framesInFlight() frames may be outstanding.
+    // oldest submitted frame. At most framesInFlight() frames may be outstanding (more is a
+    // programming error: std::logic_error). Frames come back in submission order.
     void submit(const Frame& frame);
     void retrieve(Image& out);
     std::uint32_t framesInFlight() const;
+    std::uint32_t framesPending() const;
 
-    // Validation-layer messages collected so far (empty unless options.validation).
+    // Validation-layer messages collected so far (empty unless validation is on).
     std::vector<std::string> validationMessages() const;
+    // True when VK_LAYER_KHRONOS_validation is active (options.validation or the environment
+    // variable SIGNSTIM_VALIDATION=1).
+    bool validationEnabled() const;
 
 private:
     struct Impl;

@@ -1,1 +1,6 @@
 # signstim_renderer_vk_tests (Vulkan side): golden images, multi-view, validation.
+signstim_add_test(signstim_renderer_vk_tests
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/vk_renderer_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/vk_golden.cpp
+  LIBS signstim_renderer OpenImageIO::OpenImageIO)

@@ -1,0 +1,513 @@
+// Renderer: ties the Vulkan pieces together. Per frame: pose every view on the CPU (world
+// and joint matrices into one storage buffer), record one command buffer that clears the
+// target, draws each view into its grid cell, resolves and copies to a staging buffer.
+// Frame slots (target + command buffer + fence + matrices) are used round robin so the
+// readback of one frame overlaps the drawing of the next.
+#include "renderer/renderer.hpp"
+
+#include "common/error.hpp"
+#include "renderer/label_overlay.hpp"
+#include "renderer/vk_check.hpp"
+#include "renderer/vk_commands.hpp"
+#include "renderer/vk_descriptors.hpp"
+#include "renderer/vk_device.hpp"
+#include "renderer/vk_instance.hpp"
+#include "renderer/vk_pipelines.hpp"
+#include "renderer/vk_readback.hpp"
+#include "renderer/vk_scene.hpp"
+#include "renderer/vk_targets.hpp"
+
+#include "shaders/mesh.frag.spv.h"
+#include "shaders/mesh.vert.spv.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <deque>
+#include <stdexcept>
+
+namespace signstim::render {
+
+namespace {
+
+constexpr std::uint32_t kFramesInFlight = 2;
+
+// Matches `Push` in shaders/mesh.vert and mesh.frag.
+struct PushConstants {
+    glm::mat4 viewProjection;
+    glm::vec4 cameraPosition;
+    std::uint32_t matrixBase = 0;
+    std::uint32_t jointCount = 0;  // 0: rigid
+    std::uint32_t padding[2] = {0, 0};
+};
+
+// Matches `Lighting` in shaders/mesh.frag (std140).
+struct LightingUniform {
+    glm::vec4 key, fill, rim, ambient;
+};
+
+LightingUniform lightingUniform(const Lighting& lighting) {
+    glm::vec3 key = lighting.keyDirection;
+    if (glm::length(key) < 1e-6f) key = {-0.3f, -0.5f, -1.0f};
+    key = glm::normalize(key);
+    // Fill mirrors the key to the other side and comes in nearly level; the rim comes from
+    // behind and above.
+    glm::vec3 fill = glm::normalize(glm::vec3(-key.x * 2.0f + (key.x == 0.0f ? 0.5f : 0.0f),
+                                              key.y * 0.2f, key.z));
+    glm::vec3 rim = glm::normalize(glm::vec3(-key.x * 0.5f, -0.6f, -key.z));
+    return {glm::vec4(key, lighting.keyIntensity), glm::vec4(fill, lighting.fillIntensity),
+            glm::vec4(rim, lighting.rimIntensity), glm::vec4(lighting.ambient, 0, 0, 0)};
+}
+
+std::string joinCounts(const std::vector<std::uint32_t>& counts) {
+    std::string text;
+    for (auto c : counts) text += (text.empty() ? "" : ", ") + std::to_string(c);
+    return text;
+}
+
+LabelRect cellOf(std::uint32_t width, std::uint32_t height, std::uint32_t columns,
+                 std::uint32_t rows, std::size_t index) {
+    const auto column = static_cast<std::uint32_t>(index % columns);
+    const auto row = static_cast<std::uint32_t>(index / columns);
+    LabelRect cell;
+    cell.x = column * width / columns;
+    cell.y = row * height / rows;
+    cell.width = (column + 1) * width / columns - cell.x;
+    cell.height = (row + 1) * height / rows - cell.y;
+    return cell;
+}
+
+struct Draw {
+    const vk::GpuPrimitive* primitive;
+    std::uint32_t matrixBase, jointCount;
+    float distance;
+};
+
+}  // namespace
+
+struct Renderer::Impl {
+    struct Slot {
+        std::unique_ptr<vk::OffscreenTarget> target;
+        VkCommandBuffer cmd = VK_NULL_HANDLE;
+        vk::UniqueFence fence;
+        vk::Buffer matrices;
+        VkDescriptorSet set = VK_NULL_HANDLE;
+        std::vector<std::pair<LabelRect, std::string>> labels;
+    };
+
+    RendererOptions options;
+    DeviceInfo info;
+    std::unique_ptr<vk::Instance> instance;
+    std::unique_ptr<vk::Device> device;
+    std::unique_ptr<vk::CommandPool> commands;
+    vk::UniqueDescriptorSetLayout frameLayout, materialLayout;
+    vk::UniquePipelineLayout pipelineLayout;
+    vk::UniquePipeline opaquePipeline, blendPipeline;
+    vk::Buffer lighting;
+    vk::UniqueDescriptorPool framePool;
+    std::vector<Slot> slots;
+    std::deque<std::size_t> pending;
+    std::size_t nextSlot = 0;
+    std::vector<std::unique_ptr<vk::GpuScene>> scenes;
+
+    // Scratch reused across frames.
+    std::vector<glm::mat4> matrices, world, joints;
+    std::vector<Draw> opaqueDraws, blendDraws;
+
+    ~Impl() {
+        if (device) vkDeviceWaitIdle(device->get());
+    }
+
+    void checkOptions(const vk::PhysicalDevice& physical);
+    void createPipelines(VkFormat colorFormat, VkFormat depthFormat);
+    void validateFrame(const Frame& frame) const;
+    void recordFrame(Slot& slot, const Frame& frame);
+    void ensureMatrixCapacity(Slot& slot, std::size_t count);
+};
+
+void Renderer::Impl::checkOptions(const vk::PhysicalDevice& physical) {
+    const auto& limits = device->properties().limits;
+    if (options.width == 0 || options.height == 0 ||
+        options.width > limits.maxImageDimension2D || options.height > limits.maxImageDimension2D)
+        throw InputError("<command line>", 0, "--size",
+                         std::to_string(options.width) + "x" + std::to_string(options.height) +
+                             ": width and height must be 1.." +
+                             std::to_string(limits.maxImageDimension2D) + " on device '" +
+                             info.name + "'");
+    VkFormat colorFormat = vk::colorFormatFor(options.format);
+    const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT |
+                                        VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT |
+                                        VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
+    if ((device->formatProperties(colorFormat).optimalTilingFeatures & needed) != needed)
+        throw InputError("<command line>", 0, "--format",
+                         std::string(options.format == PixelFormat::Rgba8 ? "rgba8" : "rgba16") +
+                             ": device '" + info.name + "' cannot render this format");
+    // Sample counts: framebuffer limits and what the colour format allows.
+    VkImageFormatProperties formatProperties{};
+    vkGetPhysicalDeviceImageFormatProperties(
+        physical.handle, colorFormat, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_OPTIMAL,
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT, 0,
+        &formatProperties);
+    std::vector<std::uint32_t> supported;
+    for (std::uint32_t count : info.sampleCounts)
+        if (formatProperties.sampleCounts & count) supported.push_back(count);
+    if (std::find(supported.begin(), supported.end(), options.msaa) == supported.end())
+        throw InputError("<command line>", 0, "--msaa",
+                         "--msaa " + std::to_string(options.msaa) + ": device '" + info.name +
+                             "' supports " + joinCounts(supported));
+}
+
+void Renderer::Impl::createPipelines(VkFormat colorFormat, VkFormat depthFormat) {
+    VkDevice dev = device->get();
+    frameLayout = vk::createSetLayout(
+        dev, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+              {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}});
+    materialLayout = vk::createSetLayout(
+        dev, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+              {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
+              {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}});
+    pipelineLayout = vk::createPipelineLayout(
+        dev, {frameLayout.get(), materialLayout.get()},
+        {{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(PushConstants)}});
+
+    auto vertex = vk::createShaderModule(dev, mesh_vert_spv, sizeof(mesh_vert_spv));
+    auto fragment = vk::createShaderModule(dev, mesh_frag_spv, sizeof(mesh_frag_spv));
+    vk::PipelineDesc desc;
+    desc.vertex = vertex.get();
+    desc.fragment = fragment.get();
+    desc.bindings = {{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.attributes = {
+        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, position))},
+        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, normal))},
+        {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, uv))},
+        {3, 0, VK_FORMAT_R32G32B32A32_UINT, static_cast<std::uint32_t>(offsetof(Vertex, joints))},
+        {4, 0, VK_FORMAT_R32G32B32A32_SFLOAT,
+         static_cast<std::uint32_t>(offsetof(Vertex, weights))}};
+    desc.colorFormat = colorFormat;
+    desc.depthFormat = depthFormat;
+    desc.samples = static_cast<VkSampleCountFlagBits>(options.msaa);
+    opaquePipeline = vk::createGraphicsPipeline(dev, pipelineLayout.get(), desc);
+    desc.blend = true;
+    desc.depthWrite = false;  // blended surfaces test against, but do not hide, each other
+    blendPipeline = vk::createGraphicsPipeline(dev, pipelineLayout.get(), desc);
+}
+
+void Renderer::Impl::ensureMatrixCapacity(Slot& slot, std::size_t count) {
+    const VkDeviceSize needed = std::max<std::size_t>(count, 1) * sizeof(glm::mat4);
+    if (slot.matrices.size >= needed) return;
+    VkDeviceSize size = std::max<VkDeviceSize>(needed, 2 * slot.matrices.size);
+    size = std::max<VkDeviceSize>(size, 256 * sizeof(glm::mat4));
+    slot.matrices = vk::createBuffer(*device, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                     vk::MemoryUse::Upload);
+    vk::DescriptorWriter()
+        .buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, slot.matrices.buffer.get(), size)
+        .buffer(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, lighting.buffer.get(),
+                sizeof(LightingUniform))
+        .update(device->get(), slot.set);
+}
+
+void Renderer::Impl::validateFrame(const Frame& frame) const {
+    if (frame.columns == 0 || frame.rows == 0)
+        throw InputError("<frame>", 0, "columns/rows", "the view grid must be at least 1x1");
+    if (frame.views.size() > std::size_t(frame.columns) * frame.rows)
+        throw InputError("<frame>", 0, "views",
+                         std::to_string(frame.views.size()) + " views do not fit a " +
+                             std::to_string(frame.columns) + "x" + std::to_string(frame.rows) +
+                             " grid");
+    if (frame.columns > options.width || frame.rows > options.height)
+        throw InputError("<frame>", 0, "columns/rows", "more grid cells than pixels");
+    for (std::size_t i = 0; i < frame.views.size(); ++i) {
+        const View& view = frame.views[i];
+        const std::string field = "views[" + std::to_string(i) + "]";
+        if (view.scene < 0 || static_cast<std::size_t>(view.scene) >= scenes.size())
+            throw InputError("<frame>", 0, field + ".scene",
+                             "no scene with handle " + std::to_string(view.scene) +
+                                 " (addScene returned " + std::to_string(scenes.size()) +
+                                 " so far)");
+        const Scene& scene = scenes[static_cast<std::size_t>(view.scene)]->cpu();
+        if (!view.pose.local.empty() && view.pose.local.size() != scene.nodes.size())
+            throw InputError("<frame>", 0, field + ".pose",
+                             "pose has " + std::to_string(view.pose.local.size()) +
+                                 " transforms, scene '" + scene.sourceName + "' has " +
+                                 std::to_string(scene.nodes.size()) + " nodes");
+        const Camera& camera = view.camera;
+        if (glm::length(camera.target - camera.eye) < 1e-9f ||
+            glm::length(glm::cross(camera.target - camera.eye, camera.up)) < 1e-12f)
+            throw InputError("<frame>", 0, field + ".camera",
+                             "eye, target and up must span a view (eye != target, up not "
+                             "along the view direction)");
+        if (!(camera.nearPlane > 0.0f) || !(camera.farPlane > camera.nearPlane))
+            throw InputError("<frame>", 0, field + ".camera",
+                             "needs 0 < nearPlane < farPlane");
+        if (!camera.orthographic &&
+            !(camera.verticalFovDegrees > 0.0f && camera.verticalFovDegrees < 180.0f))
+            throw InputError("<frame>", 0, field + ".camera.verticalFovDegrees",
+                             "must lie in (0, 180)");
+        if (camera.orthographic && !(camera.orthographicHeight > 0.0f))
+            throw InputError("<frame>", 0, field + ".camera.orthographicHeight", "must be > 0");
+    }
+}
+
+void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
+    // CPU pass: matrices of every view into one array, and the draw list of each view.
+    struct ViewDraws {
+        LabelRect cell;
+        PushConstants push;
+        const vk::GpuScene* scene;
+        std::size_t opaqueBegin, opaqueEnd, blendBegin, blendEnd;
+    };
+    std::vector<ViewDraws> views;
+    matrices.clear();
+    opaqueDraws.clear();
+    blendDraws.clear();
+    slot.labels.clear();
+    for (std::size_t v = 0; v < frame.views.size(); ++v) {
+        const View& view = frame.views[v];
+        const vk::GpuScene& gpu = *scenes[static_cast<std::size_t>(view.scene)];
+        const Scene& scene = gpu.cpu();
+        ViewDraws draws{};
+        draws.cell = cellOf(options.width, options.height, frame.columns, frame.rows, v);
+        draws.scene = &gpu;
+        if (!view.label.empty()) slot.labels.emplace_back(draws.cell, view.label);
+
+        const Camera& camera = view.camera;
+        const float aspect = float(draws.cell.width) / float(draws.cell.height);
+        glm::mat4 projection =
+            camera.orthographic
+                ? glm::ortho(-0.5f * camera.orthographicHeight * aspect,
+                             0.5f * camera.orthographicHeight * aspect,
+                             -0.5f * camera.orthographicHeight, 0.5f * camera.orthographicHeight,
+                             camera.nearPlane, camera.farPlane)
+                : glm::perspective(glm::radians(camera.verticalFovDegrees), aspect,
+                                   camera.nearPlane, camera.farPlane);
+        draws.push.viewProjection = projection * glm::lookAt(camera.eye, camera.target, camera.up);
+        draws.push.cameraPosition = glm::vec4(camera.eye, 1.0f);
+
+        if (view.pose.local.empty())
+            computeWorldTransforms(scene, restPose(scene), world);
+        else
+            computeWorldTransforms(scene, view.pose, world);
+
+        draws.opaqueBegin = opaqueDraws.size();
+        draws.blendBegin = blendDraws.size();
+        for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+            const Node& node = scene.nodes[n];
+            if (node.mesh < 0 || node.mesh >= static_cast<int>(scene.meshes.size())) continue;
+            const auto rigidBase = static_cast<std::uint32_t>(matrices.size());
+            matrices.push_back(world[n]);
+            std::uint32_t skinBase = 0, jointCount = 0;
+            if (node.skin >= 0 && node.skin < static_cast<int>(scene.skins.size())) {
+                computeJointMatrices(scene, node.skin, world, joints);
+                if (!joints.empty()) {
+                    skinBase = static_cast<std::uint32_t>(matrices.size());
+                    jointCount = static_cast<std::uint32_t>(joints.size());
+                    matrices.insert(matrices.end(), joints.begin(), joints.end());
+                }
+            }
+            const float distance = glm::length(glm::vec3(world[n][3]) - camera.eye);
+            for (const auto& primitive : gpu.primitives(node.mesh)) {
+                if (primitive.indexCount == 0) continue;
+                const bool skinned = primitive.skinned && jointCount > 0;
+                Draw draw{&primitive, skinned ? skinBase : rigidBase, skinned ? jointCount : 0u,
+                          distance};
+                if (gpu.material(primitive.material).alphaMode == AlphaMode::Blend)
+                    blendDraws.push_back(draw);
+                else
+                    opaqueDraws.push_back(draw);
+            }
+        }
+        draws.opaqueEnd = opaqueDraws.size();
+        draws.blendEnd = blendDraws.size();
+        // Blended surfaces back to front.
+        std::stable_sort(blendDraws.begin() + static_cast<std::ptrdiff_t>(draws.blendBegin),
+                         blendDraws.end(),
+                         [](const Draw& a, const Draw& b) { return a.distance > b.distance; });
+        views.push_back(draws);
+    }
+    ensureMatrixCapacity(slot, matrices.size());
+    if (!matrices.empty())
+        std::memcpy(slot.matrices.mapped, matrices.data(), matrices.size() * sizeof(glm::mat4));
+
+    // GPU pass.
+    VkCommandBuffer cmd = slot.cmd;
+    vk::check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer");
+    auto begin = vk::make<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vk::check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+    const glm::vec4& bg = options.background;
+    slot.target->beginRendering(cmd, VkClearColorValue{{bg.r, bg.g, bg.b, bg.a}});
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout.get(), 0, 1,
+                            &slot.set, 0, nullptr);
+    for (const ViewDraws& view : views) {
+        // Negative height: clip-space +Y up (OpenGL/glTF convention), windings preserved.
+        VkViewport viewport{float(view.cell.x), float(view.cell.y + view.cell.height),
+                            float(view.cell.width), -float(view.cell.height), 0.0f, 1.0f};
+        VkRect2D scissor{{static_cast<std::int32_t>(view.cell.x),
+                          static_cast<std::int32_t>(view.cell.y)},
+                         {view.cell.width, view.cell.height}};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        if (view.opaqueBegin == view.opaqueEnd && view.blendBegin == view.blendEnd) continue;
+        VkBuffer vertexBuffer = view.scene->vertexBuffer();
+        VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+        vkCmdBindIndexBuffer(cmd, view.scene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
+
+        auto drawRange = [&](const std::vector<Draw>& draws, std::size_t from, std::size_t to,
+                             VkPipeline pipeline) {
+            if (from == to) return;
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+            PushConstants push = view.push;
+            for (std::size_t i = from; i < to; ++i) {
+                const Draw& draw = draws[i];
+                const vk::GpuMaterial& material = view.scene->material(draw.primitive->material);
+                vkCmdSetCullMode(cmd, material.doubleSided ? VK_CULL_MODE_NONE
+                                                           : VK_CULL_MODE_BACK_BIT);
+                vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                        pipelineLayout.get(), 1, 1, &material.set, 0, nullptr);
+                push.matrixBase = draw.matrixBase;
+                push.jointCount = draw.jointCount;
+                vkCmdPushConstants(cmd, pipelineLayout.get(),
+                                   VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                                   sizeof(PushConstants), &push);
+                vkCmdDrawIndexed(cmd, draw.primitive->indexCount, 1, draw.primitive->firstIndex,
+                                 draw.primitive->vertexOffset, 0);
+            }
+        };
+        drawRange(opaqueDraws, view.opaqueBegin, view.opaqueEnd, opaquePipeline.get());
+        drawRange(blendDraws, view.blendBegin, view.blendEnd, blendPipeline.get());
+    }
+    slot.target->endRenderingAndCopy(cmd);
+    vk::check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+}
+
+std::vector<DeviceInfo> Renderer::listDevices() {
+    vk::Instance instance(false);
+    std::vector<DeviceInfo> result;
+    for (auto& device : vk::enumeratePhysicalDevices(instance.get()))
+        result.push_back(device.info);
+    return result;
+}
+
+Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl>()) {
+    Impl& r = *impl_;
+    r.options = options;
+    r.instance = std::make_unique<vk::Instance>(vk::validationWanted(options.validation));
+    const auto physicalDevices = vk::enumeratePhysicalDevices(r.instance->get());
+    const vk::PhysicalDevice& physical = vk::selectPhysicalDevice(physicalDevices, options.device);
+    r.info = physical.info;
+    r.device = std::make_unique<vk::Device>(physical);
+    r.checkOptions(physical);
+
+    r.commands = std::make_unique<vk::CommandPool>(*r.device);
+    const VkFormat colorFormat = vk::colorFormatFor(options.format);
+    const VkFormat depthFormat = vk::chooseDepthFormat(*r.device);
+    r.createPipelines(colorFormat, depthFormat);
+
+    LightingUniform lighting = lightingUniform(options.lighting);
+    r.lighting = vk::createBuffer(*r.device, sizeof(LightingUniform),
+                                  VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload);
+    std::memcpy(r.lighting.mapped, &lighting, sizeof(lighting));
+
+    r.framePool = vk::createDescriptorPool(
+        r.device->get(), kFramesInFlight,
+        {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}});
+    vk::TargetFormats formats{colorFormat, depthFormat,
+                              static_cast<VkSampleCountFlagBits>(options.msaa)};
+    r.slots.resize(kFramesInFlight);
+    for (auto& slot : r.slots) {
+        slot.target = std::make_unique<vk::OffscreenTarget>(
+            *r.device, VkExtent2D{options.width, options.height}, formats);
+        slot.cmd = r.commands->allocate();
+        slot.fence = vk::createFence(*r.device, false);
+        slot.set = vk::allocateSet(r.device->get(), r.framePool.get(), r.frameLayout.get());
+        r.ensureMatrixCapacity(slot, 256);
+    }
+}
+
+Renderer::~Renderer() = default;
+
+const DeviceInfo& Renderer::device() const { return impl_->info; }
+const RendererOptions& Renderer::options() const { return impl_->options; }
+
+int Renderer::addScene(const Scene& scene) {
+    // Joint indices beyond a skin are clamped in the shader; report them here instead of
+    // drawing garbage.
+    for (const Node& node : scene.nodes) {
+        if (node.mesh < 0 || node.mesh >= static_cast<int>(scene.meshes.size())) continue;
+        if (node.skin < 0 || node.skin >= static_cast<int>(scene.skins.size())) continue;
+        const std::size_t jointCount = scene.skins[static_cast<std::size_t>(node.skin)].joints.size();
+        for (const auto& primitive : scene.meshes[static_cast<std::size_t>(node.mesh)].primitives) {
+            if (!primitive.skinned) continue;
+            for (const Vertex& vertex : primitive.vertices)
+                for (int k = 0; k < 4; ++k)
+                    if (vertex.weights[k] != 0.0f && vertex.joints[k] >= jointCount)
+                        throw InputError(scene.sourceName, 0,
+                                         "meshes[" + std::to_string(node.mesh) + "]",
+                                         "vertex joint index " + std::to_string(vertex.joints[k]) +
+                                             " exceeds skin '" + node.name + "' joint count " +
+                                             std::to_string(jointCount));
+        }
+    }
+    impl_->scenes.push_back(std::make_unique<vk::GpuScene>(*impl_->device, *impl_->commands, scene,
+                                                           impl_->materialLayout.get()));
+    return static_cast<int>(impl_->scenes.size() - 1);
+}
+
+void Renderer::render(const Frame& frame, Image& out) {
+    if (!impl_->pending.empty())
+        throw std::logic_error("Renderer::render while frames are in flight; retrieve() them");
+    submit(frame);
+    retrieve(out);
+}
+
+void Renderer::submit(const Frame& frame) {
+    Impl& r = *impl_;
+    if (r.pending.size() >= r.slots.size())
+        throw std::logic_error("Renderer::submit: " + std::to_string(r.slots.size()) +
+                               " frames already in flight; call retrieve() first");
+    r.validateFrame(frame);
+    const std::size_t index = r.nextSlot;
+    Impl::Slot& slot = r.slots[index];
+    r.recordFrame(slot, frame);
+
+    VkFence fence = slot.fence.get();
+    vk::check(vkResetFences(r.device->get(), 1, &fence), "vkResetFences");
+    auto cmdInfo = vk::make<VkCommandBufferSubmitInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO);
+    cmdInfo.commandBuffer = slot.cmd;
+    auto submitInfo = vk::make<VkSubmitInfo2>(VK_STRUCTURE_TYPE_SUBMIT_INFO_2);
+    submitInfo.commandBufferInfoCount = 1;
+    submitInfo.pCommandBufferInfos = &cmdInfo;
+    vk::check(vkQueueSubmit2(r.device->queue(), 1, &submitInfo, fence), "vkQueueSubmit2");
+    r.pending.push_back(index);
+    r.nextSlot = (index + 1) % r.slots.size();
+}
+
+void Renderer::retrieve(Image& out) {
+    Impl& r = *impl_;
+    if (r.pending.empty()) throw std::logic_error("Renderer::retrieve: no frame in flight");
+    const std::size_t index = r.pending.front();
+    Impl::Slot& slot = r.slots[index];
+    VkFence fence = slot.fence.get();
+    vk::check(vkWaitForFences(r.device->get(), 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    r.pending.pop_front();
+    vk::convertReadback(slot.target->readback(), slot.target->extent(), r.options.format, out);
+    for (const auto& [cell, text] : slot.labels) drawLabel(out, cell, text);
+}
+
+std::uint32_t Renderer::framesInFlight() const {
+    return static_cast<std::uint32_t>(impl_->slots.size());
+}
+
+std::uint32_t Renderer::framesPending() const {
+    return static_cast<std::uint32_t>(impl_->pending.size());
+}
+
+bool Renderer::validationEnabled() const { return impl_->instance->validation(); }
+
+std::vector<std::string> Renderer::validationMessages() const {
+    return impl_->instance->messages();
+}
+
+}  // namespace signstim::render
