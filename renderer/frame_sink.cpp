@@ -1,0 +1,242 @@
+#include "renderer/frame_sink.hpp"
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <condition_variable>
+#include <cstdio>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace signstim::render {
+namespace fs = std::filesystem;
+
+std::string sequenceFrameName(std::uint64_t number) {
+    char name[40];
+    std::snprintf(name, sizeof name, "frame_%05llu.png", static_cast<unsigned long long>(number));
+    return name;
+}
+
+namespace {
+
+std::string lowerExtension(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+// Bounded multi-producer/multi-consumer queue with a first-error slot: workers report
+// failures through it, push() and finish() rethrow them on the caller's thread.
+template <typename T>
+class WorkQueue {
+public:
+    explicit WorkQueue(std::size_t capacity) : capacity_(std::max<std::size_t>(capacity, 1)) {}
+
+    void push(T item) {
+        std::unique_lock lock(mutex_);
+        notFull_.wait(lock, [&] { return queue_.size() < capacity_ || error_ || closed_; });
+        rethrowLocked();
+        if (closed_) throw std::logic_error("FrameSink: push after finish");
+        queue_.push_back(std::move(item));
+        notEmpty_.notify_one();
+    }
+    std::optional<T> pop() {  // empty once closed and drained (or failed)
+        std::unique_lock lock(mutex_);
+        notEmpty_.wait(lock, [&] { return !queue_.empty() || closed_ || error_; });
+        if (error_ || queue_.empty()) return std::nullopt;
+        T item = std::move(queue_.front());
+        queue_.pop_front();
+        notFull_.notify_one();
+        return item;
+    }
+    void close() {
+        std::lock_guard lock(mutex_);
+        closed_ = true;
+        notEmpty_.notify_all();
+        notFull_.notify_all();
+    }
+    void fail(std::exception_ptr error) {
+        std::lock_guard lock(mutex_);
+        if (!error_) error_ = error;
+        queue_.clear();
+        notEmpty_.notify_all();
+        notFull_.notify_all();
+    }
+    void rethrow() {
+        std::lock_guard lock(mutex_);
+        rethrowLocked();
+    }
+
+private:
+    void rethrowLocked() {
+        if (error_) std::rethrow_exception(error_);
+    }
+    std::size_t capacity_;
+    std::mutex mutex_;
+    std::condition_variable notFull_, notEmpty_;
+    std::deque<T> queue_;
+    std::exception_ptr error_;
+    bool closed_ = false;
+};
+
+class ImageFileSink final : public FrameSink {
+public:
+    ImageFileSink(fs::path file, ImageWriteOptions options) : file_(std::move(file)), options_(options) {}
+    void push(Image&& frame) override {
+        if (pushed_ > 0)
+            throw InputError(file_.string(), 0, "", "a single image file holds one frame; use a directory or .mp4 for " +
+                                                        std::string("several"));
+        ++pushed_;
+        frame_ = std::move(frame);
+    }
+    void finish() override {
+        if (pushed_ == 0) throw InputError(file_.string(), 0, "", "no frame was rendered");
+        if (!written_) writeImage(frame_, file_, options_);
+        written_ = true;
+    }
+    std::uint64_t framesPushed() const override { return pushed_; }
+
+private:
+    fs::path file_;
+    ImageWriteOptions options_;
+    Image frame_;
+    std::uint64_t pushed_ = 0;
+    bool written_ = false;
+};
+
+class PngSequenceSink final : public FrameSink {
+public:
+    PngSequenceSink(fs::path directory, ImageWriteOptions options, unsigned threads)
+        : directory_(std::move(directory)), options_(options),
+          queue_(2 * std::max(1u, threads)) {
+        ensureWritableDirectory(directory_);
+        for (unsigned t = 0; t < std::max(1u, threads); ++t) workers_.emplace_back([this] { run(); });
+    }
+    ~PngSequenceSink() override {
+        queue_.fail(std::make_exception_ptr(std::runtime_error("abandoned")));
+        join();
+    }
+    void push(Image&& frame) override {
+        queue_.push(Job{++pushed_, std::move(frame)});
+    }
+    void finish() override {
+        queue_.close();
+        join();
+        queue_.rethrow();
+    }
+    std::uint64_t framesPushed() const override { return pushed_; }
+
+private:
+    struct Job {
+        std::uint64_t number;
+        Image image;
+    };
+    void run() {
+        while (auto job = queue_.pop()) {
+            try {
+                writeImage(job->image, directory_ / sequenceFrameName(job->number), options_);
+            } catch (...) {
+                queue_.fail(std::current_exception());
+            }
+        }
+    }
+    void join() {
+        for (std::thread& t : workers_)
+            if (t.joinable()) t.join();
+    }
+    fs::path directory_;
+    ImageWriteOptions options_;
+    WorkQueue<Job> queue_;
+    std::vector<std::thread> workers_;
+    std::uint64_t pushed_ = 0;
+};
+
+class VideoSink final : public FrameSink {
+public:
+    VideoSink(fs::path file, VideoOptions options, unsigned queueFrames)
+        : file_(std::move(file)), options_(std::move(options)), queue_(queueFrames) {
+        ensureWritableDirectory(file_.parent_path());
+    }
+    ~VideoSink() override {
+        queue_.fail(std::make_exception_ptr(std::runtime_error("abandoned")));
+        if (worker_.joinable()) worker_.join();
+        // encoder_'s destructor stops ffmpeg and removes the temporary file.
+    }
+    void push(Image&& frame) override {
+        if (!encoder_) {
+            // Started on the caller's thread so size and ffmpeg problems surface at once.
+            encoder_ = std::make_unique<VideoEncoder>(file_, frame.width, frame.height, frame.format, options_);
+            worker_ = std::thread([this] { run(); });
+        }
+        ++pushed_;
+        queue_.push(std::move(frame));
+    }
+    void finish() override {
+        queue_.close();
+        if (worker_.joinable()) worker_.join();
+        queue_.rethrow();
+        if (!encoder_) throw InputError(file_.string(), 0, "", "no frame was rendered");
+        encoder_->finish();
+    }
+    std::uint64_t framesPushed() const override { return pushed_; }
+
+private:
+    void run() {
+        while (auto frame = queue_.pop()) {
+            try {
+                encoder_->write(*frame);
+            } catch (...) {
+                queue_.fail(std::current_exception());
+            }
+        }
+    }
+    fs::path file_;
+    VideoOptions options_;
+    WorkQueue<Image> queue_;
+    std::unique_ptr<VideoEncoder> encoder_;
+    std::thread worker_;
+    std::uint64_t pushed_ = 0;
+};
+
+class DiscardSink final : public FrameSink {
+public:
+    void push(Image&&) override { ++pushed_; }
+    void finish() override {}
+    std::uint64_t framesPushed() const override { return pushed_; }
+
+private:
+    std::uint64_t pushed_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameSink> makeImageFileSink(const fs::path& file, const ImageWriteOptions& options) {
+    ensureWritableDirectory(file.parent_path());
+    return std::make_unique<ImageFileSink>(file, options);
+}
+
+std::unique_ptr<FrameSink> makePngSequenceSink(const fs::path& directory, const ImageWriteOptions& options,
+                                               unsigned threads) {
+    if (threads == 0) threads = std::clamp(std::thread::hardware_concurrency(), 1u, 4u);
+    return std::make_unique<PngSequenceSink>(directory, options, threads);
+}
+
+std::unique_ptr<FrameSink> makeVideoSink(const fs::path& file, const VideoOptions& options, unsigned queueFrames) {
+    return std::make_unique<VideoSink>(file, options, queueFrames);
+}
+
+std::unique_ptr<FrameSink> makeDiscardSink() { return std::make_unique<DiscardSink>(); }
+
+std::unique_ptr<FrameSink> makeFrameSink(const fs::path& output, const ImageWriteOptions& imageOptions,
+                                         const VideoOptions& videoOptions) {
+    const std::string ext = lowerExtension(output);
+    if (ext == ".mp4") return makeVideoSink(output, videoOptions);
+    if (ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff") return makeImageFileSink(output, imageOptions);
+    return makePngSequenceSink(output, imageOptions);
+}
+
+}  // namespace signstim::render

@@ -1,0 +1,236 @@
+#include "renderer/video_encoder.hpp"
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+
+#include <atomic>
+#include <cerrno>
+#include <cmath>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <numeric>
+#include <spawn.h>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+extern char** environ;
+
+namespace signstim::render {
+namespace fs = std::filesystem;
+
+std::string FrameRate::text() const {
+    return denominator == 1 ? std::to_string(numerator)
+                            : std::to_string(numerator) + "/" + std::to_string(denominator);
+}
+
+FrameRate parseFrameRate(std::string_view text, const std::string& source, const std::string& field) {
+    const std::string s(text);
+    auto bad = [&](const std::string& why) -> InputError {
+        return InputError(source, 0, field, "'" + s + "': " + why +
+                                                " (examples: 30, 25, 30000/1001, 29.97)");
+    };
+    FrameRate rate;
+    const std::size_t slash = s.find('/');
+    try {
+        std::size_t used = 0;
+        if (slash != std::string::npos) {
+            const unsigned long long n = std::stoull(s.substr(0, slash), &used);
+            if (used != slash) throw bad("not a number");
+            const std::string d = s.substr(slash + 1);
+            const unsigned long long m = std::stoull(d, &used);
+            if (used != d.size() || s[0] == '-' || d[0] == '-') throw bad("not a rational number");
+            if (n == 0 || m == 0 || n > 1000000 || m > 1000000) throw bad("must be positive and below 10^6");
+            const unsigned long long g = std::gcd(n, m);
+            rate = {static_cast<std::uint32_t>(n / g), static_cast<std::uint32_t>(m / g)};
+        } else {
+            const double v = std::stod(s, &used);
+            if (used != s.size() || !std::isfinite(v)) throw bad("not a number");
+            if (v <= 0.0) throw bad("must be positive");
+            // NTSC-family rates written as decimals mean the exact x*1000/1001 rational.
+            for (std::uint32_t base : {24u, 30u, 48u, 60u, 120u})
+                if (std::abs(v - base * 1000.0 / 1001.0) < 0.006) return {base * 1000, 1001};
+            const auto milli = static_cast<unsigned long long>(std::llround(v * 1000.0));
+            if (milli == 0) throw bad("must be positive");
+            const unsigned long long g = std::gcd(milli, 1000ull);
+            rate = {static_cast<std::uint32_t>(milli / g), static_cast<std::uint32_t>(1000 / g)};
+        }
+    } catch (const std::logic_error&) {  // stoull/stod: invalid_argument, out_of_range
+        throw bad("not a frame rate");
+    }
+    if (rate.value() > 1000.0) throw bad("above 1000 fps");
+    return rate;
+}
+
+namespace {
+
+std::string tailOf(const fs::path& log, std::size_t maxBytes = 2000) {
+    std::ifstream in(log, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    std::string text = ss.str();
+    if (text.size() > maxBytes) text = "..." + text.substr(text.size() - maxBytes);
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+    return text;
+}
+
+fs::path logPath() {
+    static std::atomic<unsigned> counter{0};
+    std::error_code ec;
+    fs::path dir = fs::temp_directory_path(ec);
+    if (ec) dir = "/tmp";
+    return dir / ("signstim-ffmpeg-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".log");
+}
+
+// Writes all of `data` to `fd`; false on a broken pipe or other error. SIGPIPE is blocked for
+// this thread meanwhile (and a pending one consumed) so a dying ffmpeg cannot kill us.
+bool writeAll(int fd, const std::uint8_t* data, std::size_t size) {
+    sigset_t pipeSet, previous;
+    sigemptyset(&pipeSet);
+    sigaddset(&pipeSet, SIGPIPE);
+    pthread_sigmask(SIG_BLOCK, &pipeSet, &previous);
+    bool ok = true;
+    while (size > 0) {
+        const ssize_t n = ::write(fd, data, size);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            ok = false;
+            break;
+        }
+        data += n;
+        size -= static_cast<std::size_t>(n);
+    }
+    if (!ok) {
+        const timespec zero{0, 0};
+        sigtimedwait(&pipeSet, nullptr, &zero);
+    }
+    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    return ok;
+}
+
+}  // namespace
+
+VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t height, PixelFormat format,
+                           const VideoOptions& options)
+    : output_(std::move(output)), width_(width), height_(height), format_(format) {
+    const std::string file = output_.string();
+    if (width == 0 || height == 0 || width % 2 != 0 || height % 2 != 0)
+        throw InputError(file, 0, "size",
+                         std::to_string(width) + "x" + std::to_string(height) +
+                             ": MP4 output (H.264, yuv420p) needs an even width and height; choose an even --size");
+    if (options.crf < 0 || options.crf > 51) throw InputError(file, 0, "crf", "must be 0..51");
+    ensureWritableDirectory(output_.parent_path());
+    temporary_ = temporaryPathFor(output_);
+    stderrLog_ = logPath();
+
+    int fds[2];
+    if (::pipe2(fds, O_CLOEXEC) != 0) throw EnvironmentError(std::string("pipe: ") + std::strerror(errno));
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    const std::string rate = options.frameRate.text();
+    // SPEC §5: H.264, yuv420p, constant frame rate, +faststart. RGB -> BT.709 limited range,
+    // tagged so players convert back the same way.
+    std::vector<std::string> args = {
+        options.ffmpeg, "-hide_banner", "-nostdin", "-loglevel", "error", "-y",
+        "-f", "rawvideo", "-pix_fmt", format == PixelFormat::Rgba16 ? "rgba64le" : "rgba",
+        "-s", size, "-framerate", rate, "-i", "pipe:0", "-an",
+        "-vf", "scale=out_color_matrix=bt709:out_range=tv,format=yuv420p",
+        "-c:v", "libx264", "-preset", options.preset, "-crf", std::to_string(options.crf),
+        "-pix_fmt", "yuv420p", "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709",
+        "-color_range", "tv", "-fps_mode", "cfr", "-r", rate, "-movflags", "+faststart",
+        "-f", "mp4", temporary_.string()};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, stderrLog_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    pid_t pid = -1;
+    const int rc = posix_spawnp(&pid, options.ffmpeg.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(fds[0]);
+    if (rc != 0) {
+        ::close(fds[1]);
+        std::error_code ec;
+        fs::remove(stderrLog_, ec);
+        if (rc == ENOENT)
+            throw EnvironmentError("'" + options.ffmpeg + "' not found: MP4 output needs ffmpeg with libx264 " +
+                                   "(Debian/Ubuntu: apt install ffmpeg); or write PNG frames instead");
+        throw EnvironmentError("cannot start '" + options.ffmpeg + "': " + std::strerror(rc));
+    }
+    child_ = pid;
+    pipe_ = fds[1];
+}
+
+VideoEncoder::~VideoEncoder() {
+    if (!finished_) abandon();
+}
+
+void VideoEncoder::abandon() noexcept {
+    if (pipe_ >= 0) {
+        ::close(pipe_);
+        pipe_ = -1;
+    }
+    if (child_ > 0) {
+        ::kill(child_, SIGTERM);
+        int status = 0;
+        while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {
+        }
+        child_ = -1;
+    }
+    std::error_code ec;
+    if (!temporary_.empty()) fs::remove(temporary_, ec);
+    if (!stderrLog_.empty()) fs::remove(stderrLog_, ec);
+}
+
+void VideoEncoder::fail(const std::string& what) {
+    // Let ffmpeg finish writing its complaint before reading it.
+    if (pipe_ >= 0) {
+        ::close(pipe_);
+        pipe_ = -1;
+    }
+    if (child_ > 0) {
+        int status = 0;
+        while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {
+        }
+        child_ = -1;
+    }
+    const std::string log = tailOf(stderrLog_);
+    abandon();
+    finished_ = true;
+    throw EnvironmentError("ffmpeg failed writing " + output_.string() + ": " + what +
+                           (log.empty() ? std::string() : "\nffmpeg said:\n" + log));
+}
+
+void VideoEncoder::write(const Image& frame) {
+    if (finished_ || pipe_ < 0) throw std::logic_error("VideoEncoder::write after finish");
+    if (frame.width != width_ || frame.height != height_ || frame.format != format_ ||
+        frame.bytes.size() != static_cast<std::size_t>(width_) * height_ * frame.bytesPerPixel())
+        throw std::invalid_argument("VideoEncoder::write: frame size or format differs from the first frame");
+    if (!writeAll(pipe_, frame.bytes.data(), frame.bytes.size())) fail("it stopped reading frames");
+    ++frames_;
+}
+
+void VideoEncoder::finish() {
+    if (finished_) return;
+    if (frames_ == 0) fail("no frames were written");
+    ::close(pipe_);
+    pipe_ = -1;
+    int status = 0;
+    while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {
+    }
+    child_ = -1;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        fail(WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status)) : std::string("killed by a signal"));
+    std::error_code ec;
+    fs::remove(stderrLog_, ec);
+    finished_ = true;
+    commitAtomic(temporary_, output_);
+}
+
+}  // namespace signstim::render

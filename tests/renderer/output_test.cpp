@@ -1,0 +1,260 @@
+// Image files, MP4 encoding (checked with ffprobe) and frame sinks.
+#include "renderer/frame_sink.hpp"
+#include "renderer/image_io.hpp"
+#include "renderer/video_encoder.hpp"
+
+#include "common/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <fstream>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+using namespace signstim;
+using namespace signstim::render;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path testDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "test-tmp" / "output" /
+                         (std::string(info->test_suite_name()) + "." + info->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+// A gradient with a moving square, so successive frames differ. Synthetic test pattern.
+Image pattern(std::uint32_t width, std::uint32_t height, PixelFormat format, int frame = 0) {
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.format = format;
+    image.bytes.resize(static_cast<std::size_t>(width) * height * image.bytesPerPixel());
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            const bool square = x >= static_cast<std::uint32_t>(frame * 2) % width && x < static_cast<std::uint32_t>(frame * 2) % width + 8 && y < 8;
+            const std::uint32_t rgba[4] = {x * 65535 / width, y * 65535 / height, square ? 65535u : 12000u,
+                                           (x + y) % 3 == 0 ? 32768u : 65535u};
+            const std::size_t p = static_cast<std::size_t>(y) * width + x;
+            for (int c = 0; c < 4; ++c) {
+                if (format == PixelFormat::Rgba8) image.bytes[p * 4 + c] = static_cast<std::uint8_t>(rgba[c] >> 8);
+                else reinterpret_cast<std::uint16_t*>(image.bytes.data())[p * 4 + c] = static_cast<std::uint16_t>(rgba[c]);
+            }
+        }
+    return image;
+}
+
+std::size_t countTemporaries(const fs::path& dir) {
+    std::size_t n = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(dir))
+        n += entry.path().filename().string().find(".tmp-") != std::string::npos;
+    return n;
+}
+
+VideoOptions videoOptions(const char* rate, const char* preset = "fast", const char* ffmpeg = "ffmpeg") {
+    VideoOptions options;
+    options.frameRate = parseFrameRate(rate);
+    options.preset = preset;
+    options.ffmpeg = ffmpeg;
+    return options;
+}
+
+ImageWriteOptions imageOptions(int level, bool alpha) {
+    ImageWriteOptions options;
+    options.pngCompression = level;
+    options.alpha = alpha;
+    return options;
+}
+
+std::string run(const std::string& command) {
+    std::string out;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) return out;
+    std::array<char, 256> buffer{};
+    while (std::fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
+    ::pclose(pipe);
+    return out;
+}
+
+}  // namespace
+
+TEST(ImageIo, Png8WithAlphaRoundTripsExactly) {
+    const fs::path path = testDir() / "a.png";
+    const Image image = pattern(37, 21, PixelFormat::Rgba8);
+    writeImage(image, path);
+    const Image back = readImage(path);
+    EXPECT_EQ(back.width, 37u);
+    EXPECT_EQ(back.format, PixelFormat::Rgba8);
+    EXPECT_EQ(back.bytes, image.bytes);
+    EXPECT_EQ(countTemporaries(path.parent_path()), 0u);
+}
+
+TEST(ImageIo, Png16RoundTripsExactly) {
+    const fs::path path = testDir() / "b.png";
+    const Image image = pattern(19, 11, PixelFormat::Rgba16);
+    writeImage(image, path, imageOptions(6, true));
+    const Image back = readImage(path);
+    EXPECT_EQ(back.format, PixelFormat::Rgba16);
+    EXPECT_EQ(back.bytes, image.bytes);
+}
+
+TEST(ImageIo, PngWithoutAlphaIsOpaque) {
+    const fs::path path = testDir() / "c.png";
+    const Image image = pattern(8, 8, PixelFormat::Rgba8);
+    writeImage(image, path, imageOptions(1, false));
+    const Image back = readImage(path);
+    for (std::size_t p = 0; p < 64; ++p) {
+        EXPECT_EQ(back.bytes[p * 4 + 0], image.bytes[p * 4 + 0]);
+        EXPECT_EQ(back.bytes[p * 4 + 3], 255);
+    }
+}
+
+TEST(ImageIo, WritesExrAndTiff) {
+    const fs::path dir = testDir();
+    const Image image = pattern(16, 8, PixelFormat::Rgba8);
+    writeImage(image, dir / "d.exr");
+    writeImage(image, dir / "d.tif");
+    EXPECT_EQ(readImage(dir / "d.tif").bytes, image.bytes);
+    EXPECT_EQ(readImage(dir / "d.exr").width, 16u);
+    EXPECT_EQ(countTemporaries(dir), 0u);
+}
+
+TEST(ImageIo, UnwritableLocationIsAnInputErrorAndLeavesNothing) {
+    const fs::path dir = testDir();
+    std::ofstream(dir / "file") << "x";
+    EXPECT_THROW(writeImage(pattern(4, 4, PixelFormat::Rgba8), dir / "file" / "x.png"), InputError);
+    EXPECT_THROW(writeImage(pattern(4, 4, PixelFormat::Rgba8), dir / "x.bmpx"), InputError);
+    EXPECT_EQ(countTemporaries(dir), 0u);
+}
+
+TEST(FrameRate, ParsesIntegersRationalsAndNtscDecimals) {
+    EXPECT_EQ(parseFrameRate("30").text(), "30");
+    EXPECT_EQ(parseFrameRate("30000/1001").text(), "30000/1001");
+    EXPECT_EQ(parseFrameRate("60/2").text(), "30");
+    EXPECT_EQ(parseFrameRate("29.97").text(), "30000/1001");
+    EXPECT_EQ(parseFrameRate("23.976").text(), "24000/1001");
+    EXPECT_EQ(parseFrameRate("12.5").text(), "25/2");
+    for (const char* bad : {"", "0", "-5", "abc", "30/0", "1/2/3", "nan", "5000"})
+        EXPECT_THROW(parseFrameRate(bad), InputError) << bad;
+}
+
+TEST(Video, Mp4IsH264Yuv420pWithFrameCountAndRate) {
+    const fs::path path = testDir() / "v.mp4";
+    {
+        VideoEncoder encoder(path, 64, 48, PixelFormat::Rgba8, videoOptions("30000/1001"));
+        for (int f = 0; f < 12; ++f) encoder.write(pattern(64, 48, PixelFormat::Rgba8, f));
+        EXPECT_FALSE(fs::exists(path));  // appears only when complete
+        encoder.finish();
+    }
+    ASSERT_TRUE(fs::exists(path));
+    const std::string probe = run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                                  "stream=codec_name,pix_fmt,width,height,nb_read_frames,r_frame_rate "
+                                  "-of default=noprint_wrappers=1 '" + path.string() + "'");
+    EXPECT_NE(probe.find("codec_name=h264"), std::string::npos) << probe;
+    EXPECT_NE(probe.find("pix_fmt=yuv420p"), std::string::npos) << probe;
+    EXPECT_NE(probe.find("width=64"), std::string::npos) << probe;
+    EXPECT_NE(probe.find("nb_read_frames=12"), std::string::npos) << probe;
+    EXPECT_NE(probe.find("r_frame_rate=30000/1001"), std::string::npos) << probe;
+    EXPECT_EQ(countTemporaries(path.parent_path()), 0u);
+}
+
+TEST(Video, SixteenBitFramesEncode) {
+    const fs::path path = testDir() / "v16.mp4";
+    VideoEncoder encoder(path, 32, 32, PixelFormat::Rgba16);
+    for (int f = 0; f < 3; ++f) encoder.write(pattern(32, 32, PixelFormat::Rgba16, f));
+    encoder.finish();
+    EXPECT_NE(run("ffprobe -v error -count_frames -show_entries stream=nb_read_frames -of csv=p=0 '" + path.string() + "'")
+                  .find("3"),
+              std::string::npos);
+}
+
+TEST(Video, OddSizeIsRefusedWithAClearMessage) {
+    const fs::path dir = testDir();
+    try {
+        VideoEncoder encoder(dir / "odd.mp4", 65, 48, PixelFormat::Rgba8);
+        ADD_FAILURE();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("even"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(Video, MissingFfmpegIsAnEnvironmentError) {
+    const fs::path dir = testDir();
+    try {
+        VideoEncoder encoder(dir / "x.mp4", 64, 48, PixelFormat::Rgba8, videoOptions("30", "fast", "ffmpeg-that-does-not-exist"));
+        ADD_FAILURE();
+    } catch (const EnvironmentError& e) {
+        EXPECT_NE(std::string(e.what()).find("apt install ffmpeg"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(Video, FfmpegFailureReportsItsStderrAndLeavesNoFile) {
+    const fs::path dir = testDir();
+    try {
+        VideoEncoder encoder(dir / "x.mp4", 64, 48, PixelFormat::Rgba8, videoOptions("30", "no-such-preset"));
+        for (int f = 0; f < 50; ++f) encoder.write(pattern(64, 48, PixelFormat::Rgba8, f));
+        encoder.finish();
+        ADD_FAILURE();
+    } catch (const EnvironmentError& e) {
+        EXPECT_NE(std::string(e.what()).find("ffmpeg said"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(Video, AbandonedEncoderLeavesNoFile) {
+    const fs::path dir = testDir();
+    {
+        VideoEncoder encoder(dir / "x.mp4", 64, 48, PixelFormat::Rgba8);
+        encoder.write(pattern(64, 48, PixelFormat::Rgba8));
+    }
+    EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(FrameSink, PngSequenceNamesFramesInOrder) {
+    const fs::path dir = testDir() / "frames";
+    auto sink = makeFrameSink(dir);
+    for (int f = 0; f < 7; ++f) sink->push(pattern(20, 10, PixelFormat::Rgba8, f));
+    sink->finish();
+    EXPECT_EQ(sink->framesPushed(), 7u);
+    for (int f = 0; f < 7; ++f)
+        EXPECT_EQ(readImage(dir / sequenceFrameName(static_cast<std::uint64_t>(f + 1))).bytes,
+                  pattern(20, 10, PixelFormat::Rgba8, f).bytes);
+    EXPECT_EQ(sequenceFrameName(1), "frame_00001.png");
+    EXPECT_FALSE(fs::exists(dir / "frame_00008.png"));
+    EXPECT_EQ(countTemporaries(dir), 0u);
+}
+
+TEST(FrameSink, SingleImageTakesOneFrame) {
+    const fs::path path = testDir() / "one.png";
+    auto sink = makeFrameSink(path);
+    sink->push(pattern(8, 8, PixelFormat::Rgba8));
+    EXPECT_THROW(sink->push(pattern(8, 8, PixelFormat::Rgba8)), InputError);
+    sink->finish();
+    EXPECT_TRUE(fs::exists(path));
+}
+
+TEST(FrameSink, VideoSinkEncodesEveryFrame) {
+    const fs::path path = testDir() / "s.mp4";
+    auto sink = makeFrameSink(path, {}, videoOptions("25"));
+    for (int f = 0; f < 20; ++f) sink->push(pattern(48, 32, PixelFormat::Rgba8, f));
+    sink->finish();
+    const std::string probe = run("ffprobe -v error -count_frames -show_entries stream=nb_read_frames,r_frame_rate "
+                                  "-of default=noprint_wrappers=1 '" + path.string() + "'");
+    EXPECT_NE(probe.find("nb_read_frames=20"), std::string::npos) << probe;
+    EXPECT_NE(probe.find("r_frame_rate=25/1"), std::string::npos) << probe;
+}
+
+TEST(FrameSink, VideoErrorSurfacesOnPush) {
+    const fs::path dir = testDir();
+    auto sink = makeFrameSink(dir / "odd.mp4");
+    EXPECT_THROW(sink->push(pattern(33, 32, PixelFormat::Rgba8)), InputError);
+    sink.reset();
+    EXPECT_TRUE(fs::is_empty(dir));
+}
