@@ -3,6 +3,7 @@ target_sources(signstim_renderer PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/scene.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_loader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/animation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/image_io.cpp
   ${CMAKE_CURRENT_LIST_DIR}/video_encoder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/frame_sink.cpp)

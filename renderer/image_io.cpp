@@ -3,6 +3,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -77,6 +78,28 @@ void writeImage(const Image& image, const fs::path& path, const ImageWriteOption
     if (!ok) throw InputError(file, 0, "", "cannot write image: " + output->geterror());
     if (!output->close()) throw InputError(file, 0, "", "cannot write image: " + output->geterror());
     temporary.commit();
+}
+
+std::vector<std::uint8_t> encodePng(const Image& image, const ImageWriteOptions& options) {
+    const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+    if (image.width == 0 || image.height == 0 || image.bytes.size() != pixels * image.bytesPerPixel())
+        throw std::invalid_argument("encodePng: image size does not match its bytes");
+    const int channels = options.alpha ? 4 : 3;
+    const bool sixteen = image.format == PixelFormat::Rgba16;
+    OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), channels,
+                         sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+    if (options.alpha) spec.alpha_channel = 3;
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    spec.attribute("png:compressionLevel", std::clamp(options.pngCompression, 0, 9));
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    auto output = OIIO::ImageOutput::create("memory.png", &memory);
+    if (!output || !output->open("memory.png", spec) ||
+        !output->write_image(sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8, image.bytes.data(),
+                             static_cast<OIIO::stride_t>(image.bytesPerPixel())) ||
+        !output->close())
+        throw EnvironmentError("PNG encoding failed: " + (output ? output->geterror() : OIIO::geterror()));
+    return std::vector<std::uint8_t>(bytes.begin(), bytes.end());
 }
 
 Image readImage(const fs::path& path) {

@@ -4,7 +4,9 @@
 // 16-bit; EXR is always half float, linearised from the sRGB-encoded pixels).
 #include "renderer/image.hpp"
 
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 namespace signstim::render {
 
@@ -19,6 +21,9 @@ struct ImageWriteOptions {
 // Throws InputError naming the path (unknown extension, unwritable location, bad options).
 void writeImage(const Image& image, const std::filesystem::path& path,
                 const ImageWriteOptions& options = {});
+
+// PNG file contents in memory (for embedding, e.g. glTF images). Deterministic.
+std::vector<std::uint8_t> encodePng(const Image& image, const ImageWriteOptions& options = {});
 
 // Reads any OIIO-readable file into RGBA (missing alpha = opaque); 16-bit files give Rgba16,
 // everything else Rgba8. Throws InputError naming the file.

@@ -6,4 +6,5 @@ signstim_add_test(signstim_renderer_gltf_tests
     ${CMAKE_CURRENT_LIST_DIR}/gltf_loader_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/output_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/animation_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gltf_writer_test.cpp
   LIBS signstim_renderer OpenImageIO::OpenImageIO nlohmann_json::nlohmann_json)
