@@ -1,0 +1,248 @@
+#include "app/signer_pose.hpp"
+
+#include "common/error.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+namespace signstim::app {
+namespace {
+
+constexpr float kMToMm = 1000.0f;
+constexpr float kDeg = 3.14159265358979323846f / 180.0f;
+
+glm::quat frameFromAxes(glm::vec3 x, glm::vec3 z) {
+    z = glm::normalize(z);
+    x = glm::normalize(x - glm::dot(x, z) * z);
+    return glm::normalize(glm::quat_cast(glm::mat3(x, glm::cross(z, x), z)));
+}
+
+// The left hand's frame is the mirror of the right's (SPEC §1.1): body mirror x -> -x, and
+// the frame's own y -> -y.
+glm::quat mirrorHandRotation(const glm::quat& q) {
+    const glm::mat3 body(glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1));
+    const glm::mat3 frame(glm::vec3(1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, 1));
+    return glm::normalize(glm::quat_cast(body * glm::mat3_cast(q) * frame));
+}
+
+std::string sideName(hand::Side side) { return side == hand::Side::Right ? "right" : "left"; }
+
+glm::quat rotationOf(const glm::mat4& m) {
+    return glm::normalize(glm::quat_cast(glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])),
+                                                   glm::normalize(glm::vec3(m[2])))));
+}
+
+}  // namespace
+
+const std::vector<std::string>& requiredSignerBones() {
+    static const std::vector<std::string> bones = [] {
+        std::vector<std::string> b{"hips", "spine", "neck", "head"};
+        for (hand::Side side : {hand::Side::Left, hand::Side::Right}) {
+            const std::string s = sideName(side);
+            b.push_back(s + "UpperArm");
+            b.push_back(s + "LowerArm");
+            for (const auto& bone : hand::handBones(side)) b.emplace_back(bone.name);
+        }
+        return b;
+    }();
+    return bones;
+}
+
+BoneMapping loadBoneMapping(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) throw InputError(file.string(), 0, "", "cannot read the bone mapping file");
+    std::stringstream text;
+    text << in.rdbuf();
+    nlohmann::json json;
+    try {
+        json = nlohmann::json::parse(text.str());
+    } catch (const nlohmann::json::parse_error& e) {
+        // nlohmann reports a byte offset; turn it into a line.
+        const std::string s = text.str();
+        const auto offset = std::min<std::size_t>(e.byte, s.size());
+        const int line = 1 + static_cast<int>(std::count(s.begin(), s.begin() + static_cast<long>(offset), '\n'));
+        throw InputError(file.string(), line, "", std::string("not valid JSON: ") + e.what());
+    }
+    const nlohmann::json& object = json.contains("bones") ? json["bones"] : json;
+    if (!object.is_object())
+        throw InputError(file.string(), 0, "bones", "expected an object {\"vrmBoneName\": \"nodeName\"}");
+    BoneMapping mapping;
+    for (const auto& [vrm, node] : object.items()) {
+        if (!node.is_string())
+            throw InputError(file.string(), 0, vrm, "expected the node name as a string");
+        mapping[vrm] = node.get<std::string>();
+    }
+    return mapping;
+}
+
+glm::vec3 bodyFromSigningSpace(const glm::vec3& pointMm) { return {-pointMm.x, pointMm.y, pointMm.z}; }
+
+glm::quat bodyFromSigningSpace(const glm::quat& rotation) {
+    const glm::mat3 s(glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1));
+    return glm::normalize(glm::quat_cast(s * glm::mat3_cast(rotation) * s));
+}
+
+SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, const hand::HandModel& handModel)
+    : scene_(&scene), handModel_(handModel) {
+    const auto lookup = [&](const std::string& vrm) {
+        const auto it = mapping.find(vrm);
+        return scene.findNode(it != mapping.end() ? it->second : vrm);
+    };
+    std::vector<std::string> missing;
+    for (const std::string& name : requiredSignerBones())
+        if (lookup(name) < 0) missing.push_back(name);
+    if (!missing.empty()) {
+        std::string list;
+        for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
+        throw InputError(scene.sourceName, 0, "skeleton",
+                         std::to_string(missing.size()) + " required bone(s) missing: " + list +
+                             " (use VRM humanoid bone names, or map them with a bone mapping file)");
+    }
+
+    // Canonical rest rotations (see the top of the header and hand/arm_ik.hpp).
+    const auto add = [&](const std::string& vrm, glm::quat canonicalRest) {
+        const int n = lookup(vrm);
+        if (n >= 0) bones_[vrm] = Bone{n, canonicalRest};
+    };
+    const glm::quat identity(1.0f, 0.0f, 0.0f, 0.0f);
+    for (const char* b : {"hips", "spine", "chest", "upperChest", "neck", "head", "leftEye", "rightEye"}) add(b, identity);
+    for (hand::Side side : {hand::Side::Right, hand::Side::Left}) {
+        const std::string s = sideName(side);
+        for (const char* part : {"Shoulder", "UpperArm", "LowerArm", "ForearmTwistMid", "ForearmTwistWrist"})
+            add(s + part, identity);
+        const hand::HandPose rest = hand::forwardKinematics(handModel_, hand::HandControls{}, side);
+        const auto info = hand::handBones(side);
+        for (int b = 0; b < hand::kBodyCount; ++b)
+            add(std::string(info[b].name), hand::restFrame(side) * rest.bodies[b].rotation);
+    }
+
+    const render::Pose restPose = render::restPose(scene);
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(scene, restPose, world);
+    restWorldRotation_.resize(world.size());
+    for (std::size_t i = 0; i < world.size(); ++i) restWorldRotation_[i] = rotationOf(world[i]);
+    const auto position = [&](const std::string& vrm) { return glm::vec3(world[node(vrm)][3]); };
+
+    const glm::vec3 leftShoulder = position("leftUpperArm"), rightShoulder = position("rightUpperArm");
+    const float shoulderHalfWidth = 0.5f * glm::length(leftShoulder - rightShoulder);
+    // The chest sits 130 mm below the shoulder joints in the default signer; scale with the
+    // skeleton's shoulder width (175 mm half-width there).
+    bodyOriginM_ = 0.5f * (leftShoulder + rightShoulder) - glm::vec3(0.0f, 0.13f * shoulderHalfWidth / 0.175f, 0.0f);
+    for (hand::Side side : {hand::Side::Right, hand::Side::Left}) {
+        const std::string s = sideName(side);
+        hand::ArmModel arm = hand::defaultArmModel(side);
+        arm.shoulderMm = (position(s + "UpperArm") - bodyOriginM_) * kMToMm;
+        arm.upperArmLengthMm = glm::length(position(s + "LowerArm") - position(s + "UpperArm")) * kMToMm;
+        arm.forearmLengthMm = glm::length(position(s + "Hand") - position(s + "LowerArm")) * kMToMm;
+        arms_[side == hand::Side::Right ? 0 : 1] = arm;
+    }
+    // Without eye bones: the default signer's eyes relative to its head bone.
+    gaze_.eyesMm = (position("head") - bodyOriginM_) * kMToMm + glm::vec3(0.0f, 115.0f, 78.0f);
+    if (bones_.count("leftEye") && bones_.count("rightEye"))
+        gaze_.eyesMm = (0.5f * (position("leftEye") + position("rightEye")) - bodyOriginM_) * kMToMm;
+}
+
+int SignerRig::node(const std::string& vrmName) const {
+    const auto it = bones_.find(vrmName);
+    return it == bones_.end() ? -1 : it->second.node;
+}
+
+hand::ArmTarget SignerRig::restingTarget(hand::Side side) const {
+    // Right hand: wrist low in front of the waist, palm facing in and down, fingers forward
+    // and across.
+    hand::ArmTarget right{{-130.0f, -270.0f, 170.0f},
+                          frameFromAxes({0.8f, -0.6f, 0.0f}, {0.45f, -0.1f, 1.0f})};
+    if (side == hand::Side::Right) return right;
+    return {{-right.wristMm.x, right.wristMm.y, right.wristMm.z}, mirrorHandRotation(right.handRotation)};
+}
+
+hand::ArmTarget SignerRig::presentingTarget(hand::Side side) const {
+    // Right hand beside the right shoulder, palm toward the viewer, fingers up.
+    hand::ArmTarget right{{-170.0f, 60.0f, 300.0f}, frameFromAxes({0.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 0.0f})};
+    if (side == hand::Side::Right) return right;
+    return {{-right.wristMm.x, right.wristMm.y, right.wristMm.z}, mirrorHandRotation(right.handRotation)};
+}
+
+render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report, const PoseReport* previous) const {
+    const render::Scene& scene = *scene_;
+    PoseReport local;
+    PoseReport& out = report ? *report : local;
+
+    std::map<std::string, glm::quat> canonical;  // posed canonical world rotations
+    for (hand::Side side : {hand::Side::Right, hand::Side::Left}) {
+        const bool right = side == hand::Side::Right;
+        const hand::ArmTarget target =
+            (right ? posture.rightWrist : posture.leftWrist).value_or(restingTarget(side));
+        hand::ArmSolveOptions options;
+        if (previous) options.previousElbowDirection = (right ? previous->right : previous->left).elbowDirection;
+        const hand::ArmPose arm = hand::solveArm(this->arm(side), target, options);
+        (right ? out.right : out.left) = arm;
+
+        const std::string s = sideName(side);
+        const glm::quat restInv = glm::inverse(hand::restFrame(side));
+        const float twistSign = right ? 1.0f : -1.0f;  // hand = forearm·R_z(sign·supination)·…
+        const auto twist = [&](float fraction) {
+            return arm.forearm * glm::angleAxis(twistSign * fraction * arm.supinationDeg * kDeg, glm::vec3(0, 0, 1));
+        };
+        canonical[s + "UpperArm"] = arm.upperArm * restInv;
+        canonical[s + "LowerArm"] = arm.forearm * restInv;
+        canonical[s + "ForearmTwistMid"] = twist(0.5f) * restInv;
+        canonical[s + "ForearmTwistWrist"] = twist(1.0f) * restInv;
+        const hand::HandPose handPose =
+            hand::forwardKinematics(handModel_, right ? posture.rightHand : posture.leftHand, side);
+        const auto info = hand::handBones(side);
+        for (int b = 0; b < hand::kBodyCount; ++b)
+            canonical[std::string(info[b].name)] = arm.hand * handPose.bodies[b].rotation;
+    }
+    if (posture.gazeMm) {
+        out.gaze = hand::solveGaze(gaze_, *posture.gazeMm);
+        canonical["neck"] = out.gaze.neck;
+        canonical["head"] = out.gaze.head;
+        canonical["leftEye"] = out.gaze.head * out.gaze.eyes;
+        canonical["rightEye"] = out.gaze.head * out.gaze.eyes;
+    }
+
+    // Desired world rotation per posed node.
+    std::vector<std::optional<glm::quat>> desired(scene.nodes.size());
+    for (const auto& [name, q] : canonical) {
+        const auto it = bones_.find(name);
+        if (it == bones_.end()) continue;
+        const Bone& bone = it->second;
+        desired[bone.node] = glm::normalize(q * glm::inverse(bone.canonicalRest) * restWorldRotation_[bone.node]);
+    }
+
+    render::Pose pose = render::restPose(scene);
+    std::vector<glm::quat> worldRotation(scene.nodes.size(), glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+    std::function<void(int, glm::quat)> visit = [&](int n, glm::quat parentWorld) {
+        render::Trs& trs = pose.local[n];
+        if (desired[n]) {
+            if (pose.useRestMatrix.size() > static_cast<std::size_t>(n) && pose.useRestMatrix[n]) {
+                // A node given as a glTF matrix: decompose so its rotation can be driven.
+                const glm::mat4 m = *scene.nodes[n].restMatrix;
+                trs.translation = glm::vec3(m[3]);
+                trs.scale = {glm::length(glm::vec3(m[0])), glm::length(glm::vec3(m[1])), glm::length(glm::vec3(m[2]))};
+                pose.useRestMatrix[n] = false;
+            }
+            trs.rotation = glm::normalize(glm::inverse(parentWorld) * *desired[n]);
+            worldRotation[n] = *desired[n];
+        } else {
+            const glm::quat localRotation =
+                scene.nodes[n].restMatrix ? rotationOf(*scene.nodes[n].restMatrix) : trs.rotation;
+            worldRotation[n] = glm::normalize(parentWorld * localRotation);
+        }
+        for (int child : scene.nodes[n].children) visit(child, worldRotation[n]);
+    };
+    for (std::size_t n = 0; n < scene.nodes.size(); ++n)
+        if (scene.nodes[n].parent < 0) visit(static_cast<int>(n), glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+    return pose;
+}
+
+}  // namespace signstim::app

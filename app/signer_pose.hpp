@@ -1,0 +1,96 @@
+#pragma once
+// Posing a signer avatar for one frame: hand shapes (McDonald hand controls), wrist targets
+// (arm IK) and an optional gaze point -> a render::Pose for the avatar's Scene.
+//
+// Works for the default avatar (app/avatar_builder.hpp) and for any glTF whose skeleton uses
+// VRM humanoid bone names (or a mapping file), in a T-pose facing +Z. Rotations are
+// retargeted through the rest pose: world(bone) = canonical(bone) · canonicalRest⁻¹ ·
+// restWorld(bone), so the user's own bone axes do not matter; the arm lengths and shoulder
+// positions are read from the skeleton.
+//
+// Frames. Wrist targets and gaze points are given in the body frame of hand/arm_ik.hpp
+// (mm, +x the signer's LEFT, +y up, +z forward, origin at the chest). Verb data lives in the
+// signing-space frame of stimuli/signing_space.hpp (+x the signer's RIGHT); convert with
+// bodyFromSigningSpace(). The origin (the chest) is 130 mm below the midpoint of the
+// shoulder joints, as in the default avatar.
+#include "hand/arm_ik.hpp"
+#include "hand/gaze.hpp"
+#include "hand/hand_model.hpp"
+#include "renderer/scene.hpp"
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace signstim::app {
+
+// VRM humanoid bone name -> node name in the user's glTF.
+using BoneMapping = std::map<std::string, std::string>;
+// JSON object {"leftUpperArm": "mixamorig:LeftArm", ...} (optionally under "bones").
+// Throws InputError naming the file, line and field.
+BoneMapping loadBoneMapping(const std::filesystem::path& file);
+
+// Bones the posing needs (VRM names); eyes, shoulders and the forearm twist helpers are used
+// when present.
+const std::vector<std::string>& requiredSignerBones();
+
+// Signing space (SPEC §3.1, +x = the signer's right) -> body frame (+x = the signer's left).
+// The frames differ by the mirror x -> -x; a rotation R becomes S·R·S (S = diag(-1, 1, 1)),
+// which is a proper rotation again.
+glm::vec3 bodyFromSigningSpace(const glm::vec3& pointMm);
+glm::quat bodyFromSigningSpace(const glm::quat& rotation);
+
+struct SignerPosture {
+    hand::HandControls rightHand, leftHand;
+    // Body frame. Absent: the hand rests in front of the waist (restingTarget()).
+    std::optional<hand::ArmTarget> rightWrist, leftWrist;
+    std::optional<glm::vec3> gazeMm;  // body frame; absent: straight ahead
+};
+
+struct PoseReport {
+    hand::ArmPose right, left;
+    hand::GazePose gaze;
+};
+
+class SignerRig {
+public:
+    // Finds every required bone (VRM names, or `mapping` VRM -> node name). Throws InputError
+    // naming the scene and listing all missing bones.
+    explicit SignerRig(const render::Scene& scene, const BoneMapping& mapping = {},
+                       const hand::HandModel& handModel = hand::buildHandModel());
+
+    const hand::ArmModel& arm(hand::Side side) const { return arms_[side == hand::Side::Right ? 0 : 1]; }
+    const hand::GazeModel& gaze() const { return gaze_; }
+    const hand::HandModel& handModel() const { return handModel_; }
+
+    // Where an unused hand rests: in front of the waist, palm in.
+    hand::ArmTarget restingTarget(hand::Side side) const;
+    // A comfortable default for a hand being shown: beside the shoulder, palm toward the
+    // viewer, fingers up (where fingerspelling happens).
+    hand::ArmTarget presentingTarget(hand::Side side) const;
+
+    // The pose for one frame. Pass the previous frame's report for continuity (no elbow
+    // flips between neighbouring frames); `report` receives reach/limit information.
+    render::Pose pose(const SignerPosture& posture, PoseReport* report = nullptr,
+                      const PoseReport* previous = nullptr) const;
+
+private:
+    struct Bone {
+        int node = -1;
+        glm::quat canonicalRest{1.0f, 0.0f, 0.0f, 0.0f};
+    };
+    int node(const std::string& vrmName) const;
+
+    const render::Scene* scene_;
+    hand::HandModel handModel_;
+    std::map<std::string, Bone> bones_;      // VRM name -> node, for the bones present
+    std::vector<glm::quat> restWorldRotation_;
+    std::array<hand::ArmModel, 2> arms_;     // right, left
+    hand::GazeModel gaze_;
+    glm::vec3 bodyOriginM_{0.0f};            // chest, world metres
+};
+
+}  // namespace signstim::app

@@ -1,0 +1,142 @@
+// Posing the signer: wrists land on their targets, fingers follow the hand model, bring-your-
+// own skeletons are mapped or refused with the list of missing bones.
+#include "app/avatar_builder.hpp"
+#include "app/signer_pose.hpp"
+#include "common/error.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <cstdio>
+#include <fstream>
+
+using namespace signstim;
+
+namespace {
+const render::Scene& avatar() {
+    static const render::Scene scene = app::buildDefaultAvatar();
+    return scene;
+}
+}  // namespace
+
+TEST(SignerPose, WristsLandOnTheirTargetsAndFingersFollowTheHandModel) {
+    const render::Scene& s = avatar();
+    const app::SignerRig rig(s);
+    app::SignerPosture posture;
+    posture.rightHand.fingers[0].bend = 0.6f;
+    posture.rightHand.thumb.bendDeg = 60.0f;
+    posture.rightWrist = rig.presentingTarget(hand::Side::Right);
+    posture.leftWrist = hand::ArmTarget{{120, -50, 280}, glm::quat(1, 0, 0, 0)};
+    app::PoseReport report;
+    const render::Pose pose = rig.pose(posture, &report);
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(s, pose, world);
+    const glm::vec3 chest = glm::vec3(world[s.findNode("chest")][3]);
+    for (hand::Side side : {hand::Side::Right, hand::Side::Left}) {
+        const hand::ArmTarget target = side == hand::Side::Right ? *posture.rightWrist : *posture.leftWrist;
+        const hand::ArmPose& arm = side == hand::Side::Right ? report.right : report.left;
+        const glm::mat4& palm = world[s.findNode(side == hand::Side::Right ? "rightHand" : "leftHand")];
+        const glm::vec3 wristMm = (glm::vec3(palm[3]) - chest) * 1000.0f;
+        EXPECT_LT(glm::length(wristMm - arm.wristMm), 0.5f);
+        if (arm.reachable) {
+            EXPECT_LT(glm::length(wristMm - target.wristMm), 0.5f);
+        }
+        const glm::quat palmRotation = glm::normalize(glm::quat_cast(glm::mat3(palm)));
+        EXPECT_LT(hand::rotationAngleDeg(palmRotation, arm.hand), 0.1f);
+    }
+    // Fingertips: the hand model's tips, carried by the palm transform.
+    const hand::HandModel model = hand::buildHandModel();
+    const hand::HandPose hp = hand::forwardKinematics(model, posture.rightHand, hand::Side::Right);
+    const glm::mat4& palm = world[s.findNode("rightHand")];
+    const glm::mat4& distal = world[s.findNode("rightIndexDistal")];
+    const glm::vec3 tipFromBones = glm::vec3(distal * glm::vec4(0, 0, hand::boneLengthMm(model, hand::Body::IndexDistal) * 0.001f, 1));
+    const glm::vec3 tipFromModel = glm::vec3(palm * glm::vec4(hp.tips[1] * 0.001f, 1));
+    EXPECT_LT(glm::length(tipFromBones - tipFromModel) * 1000.0f, 0.05f);
+}
+
+TEST(SignerPose, GazeTurnsHeadAndEyesTowardThePoint) {
+    const render::Scene& s = avatar();
+    const app::SignerRig rig(s);
+    app::SignerPosture posture;
+    posture.gazeMm = glm::vec3(400, 100, 500);  // to the signer's left
+    app::PoseReport report;
+    const render::Pose pose = rig.pose(posture, &report);
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(s, pose, world);
+    const glm::mat4& eye = world[s.findNode("leftEye")];
+    const glm::vec3 chest = glm::vec3(world[s.findNode("chest")][3]);
+    const glm::vec3 look = glm::normalize(glm::vec3(eye[2]));
+    const glm::vec3 toTarget = glm::normalize(*posture.gazeMm * 0.001f + chest - glm::vec3(eye[3]));
+    EXPECT_GT(glm::dot(look, toTarget), 0.995f);
+    EXPECT_GT(report.gaze.headYawDeg, 10.0f);
+}
+
+TEST(SignerPose, SigningSpaceIsTheMirrorOfTheBodyFrame) {
+    EXPECT_EQ(app::bodyFromSigningSpace(glm::vec3(100, 20, 300)), glm::vec3(-100, 20, 300));
+    // A rotation about the vertical axis turns the other way in the mirrored frame.
+    const glm::quat yaw = glm::angleAxis(0.5f, glm::vec3(0, 1, 0));
+    EXPECT_LT(hand::rotationAngleDeg(app::bodyFromSigningSpace(yaw), glm::angleAxis(-0.5f, glm::vec3(0, 1, 0))), 1e-3f);
+}
+
+TEST(SignerPose, IncompleteSkeletonIsRefusedListingEveryMissingBone) {
+    render::Scene s = avatar();
+    s.sourceName = "my_avatar.glb";
+    s.nodes[s.findNode("leftIndexDistal")].name = "L_index_3";
+    s.nodes[s.findNode("rightLowerArm")].name = "forearm.R";
+    try {
+        app::SignerRig rig(s);
+        FAIL() << "accepted an incomplete skeleton";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("my_avatar.glb"), std::string::npos) << what;
+        EXPECT_NE(what.find("leftIndexDistal"), std::string::npos) << what;
+        EXPECT_NE(what.find("rightLowerArm"), std::string::npos) << what;
+        EXPECT_NE(what.find("2 required"), std::string::npos) << what;
+    }
+}
+
+TEST(SignerPose, MappingFileNamesTheUsersBones) {
+    render::Scene s = avatar();
+    s.nodes[s.findNode("leftIndexDistal")].name = "L_index_3";
+    s.nodes[s.findNode("rightLowerArm")].name = "forearm.R";
+    const std::string path = std::string(SIGNSTIM_BINARY_DIR) + "/avatar_test_mapping.json";
+    {
+        std::ofstream out(path);
+        out << R"({"bones": {"leftIndexDistal": "L_index_3", "rightLowerArm": "forearm.R"}})";
+    }
+    const app::BoneMapping mapping = app::loadBoneMapping(path);
+    const app::SignerRig mapped(s, mapping);
+    const app::SignerRig original(avatar());
+    app::SignerPosture posture;
+    posture.rightWrist = original.presentingTarget(hand::Side::Right);
+    const render::Pose a = mapped.pose(posture), b = original.pose(posture);
+    for (std::size_t i = 0; i < a.local.size(); ++i)
+        EXPECT_GT(std::fabs(glm::dot(a.local[i].rotation, b.local[i].rotation)), 1.0f - 1e-6f);
+    {
+        std::ofstream out(path);
+        out << "{\"bones\": {\"leftIndexDistal\": 3}}";
+    }
+    EXPECT_THROW(app::loadBoneMapping(path), InputError);
+    std::remove(path.c_str());
+}
+
+TEST(SignerPose, RetargetingThroughTheRestPoseIgnoresTheUsersBoneAxes) {
+    // Rotate one bone's rest frame (and compensate its children) as another tool would: the
+    // posed world positions of every bone must not change.
+    render::Scene s = avatar();
+    const int lower = s.findNode("rightLowerArm");
+    const glm::quat extra = glm::angleAxis(0.9f, glm::normalize(glm::vec3(0.2f, 1.0f, -0.4f)));
+    s.nodes[lower].rest.rotation = s.nodes[lower].rest.rotation * extra;
+    for (int child : s.nodes[lower].children) {
+        s.nodes[child].rest.translation = glm::inverse(extra) * s.nodes[child].rest.translation;
+        s.nodes[child].rest.rotation = glm::inverse(extra) * s.nodes[child].rest.rotation;
+    }
+    const app::SignerRig changed(s), original(avatar());
+    app::SignerPosture posture;
+    posture.rightWrist = original.presentingTarget(hand::Side::Right);
+    std::vector<glm::mat4> wa, wb;
+    render::computeWorldTransforms(s, changed.pose(posture), wa);
+    render::computeWorldTransforms(avatar(), original.pose(posture), wb);
+    for (std::size_t i = 0; i < wa.size(); ++i)
+        EXPECT_LT(glm::length(glm::vec3(wa[i][3]) - glm::vec3(wb[i][3])), 1e-4f) << s.nodes[i].name;
+}
