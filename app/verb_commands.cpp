@@ -1,8 +1,188 @@
+// `signstim train`, `signstim verb`, `signstim evaluate`, `signstim reference-corpus`:
+// the indicating verbs of SPEC §3 (Huenerfauth, Lu & Kacorri 2015).
 #include "app/commands.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "stimuli/corpus.hpp"
+#include "stimuli/evaluation.hpp"
+#include "stimuli/reference_performer.hpp"
+#include "stimuli/scenes_path.hpp"
+#include "stimuli/signing_space.hpp"
+#include "stimuli/sora.hpp"
+#include "stimuli/verb_models.hpp"
+#include "stimuli/verb_synthesis.hpp"
+#include "stimuli/verbs.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <string>
 
 namespace signstim::app {
+namespace {
 
-// Owned by the verb area; commands are added as the area lands.
-void registerVerbCommands(Commands&) {}
+using namespace signstim::stimuli;
+
+struct VerbOptions {
+    std::string scenesDir;
+    std::string verbsFile;   // default <scenes>/verbs.json
+    std::string modelsFile;  // default <scenes>/models/verb_models.json
+    std::string corpusFile;
+    std::string outPath;
+    std::string performerFile;
+    std::string verb;
+    std::string version = "point";
+    double subject = 0.0;
+    double object = 0.0;
+    bool json = false;
+    int degree = 3;
+};
+
+std::filesystem::path scenes(const VerbOptions& o) { return resolveScenesDir(o.scenesDir); }
+
+VerbLibrary verbLibrary(const VerbOptions& o) {
+    return loadVerbLibrary(o.verbsFile.empty() ? scenes(o) / "verbs.json" : std::filesystem::path(o.verbsFile));
+}
+
+void addCommonOptions(CLI::App* command, const std::shared_ptr<VerbOptions>& o) {
+    command->add_option("--scenes", o->scenesDir,
+                        "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ installed beside signstim)");
+    command->add_option("--verbs", o->verbsFile, "Verb definitions (default: SCENES/verbs.json)");
+}
+
+void printSummary(const VerbPerformance& p) {
+    std::printf("%s (%s), subject %.2f, object %.2f, %.2f s\n", p.verb.c_str(), toString(p.version).c_str(), p.subject,
+                p.object, p.durationSeconds);
+    for (const HandTrack& track : p.hands) {
+        for (const PerformanceKeyframe& key : track.keyframes) {
+            const glm::dvec3 f = fingersDirection(key.pose.orientation);
+            const glm::dvec3 palm = palmDirection(key.pose.orientation);
+            std::printf("  %-5s t=%.2f s  position (%7.1f, %7.1f, %7.1f) mm  fingers (%5.2f, %5.2f, %5.2f)  palm (%5.2f, "
+                        "%5.2f, %5.2f)  %s\n",
+                        toString(track.side).c_str(), key.timeSeconds, key.pose.positionMm.x, key.pose.positionMm.y,
+                        key.pose.positionMm.z, f.x, f.y, f.z, palm.x, palm.y, palm.z, key.handshape.c_str());
+        }
+    }
+    std::printf("(--json prints the keyframes as JSON, the animator file format)\n");
+}
+
+}  // namespace
+
+void registerVerbCommands(Commands& commands) {
+    // ---- train ------------------------------------------------------------------------------
+    {
+        auto o = std::make_shared<VerbOptions>();
+        CLI::App* train = commands.root.add_subcommand(
+            "train",
+            "Fit the verb models (PointModel, VectorModel, SORA orientation; SPEC 3.4-3.6) to a corpus CSV\n"
+            "and write them as JSON. The CSV format (docs/verbs.md): one row per verb example, hand and\n"
+            "keyframe: verb,example,subject,object,hand,keyframe,x,y,z,roll,pitch,yaw; x/y/z in mm in the\n"
+            "torso frame (+x signer's right, +y up, +z forward), roll/pitch/yaw in degrees, R = Rz Ry Rx.\n"
+            "Example: signstim train scenes/corpus/reference_corpus.csv --out scenes/models/verb_models.json");
+        train->add_option("corpus", o->corpusFile, "Corpus CSV (motion capture export or the reference corpus)")->required();
+        train->add_option("--out", o->outPath, "Where to write the trained models (JSON)")->required();
+        train->add_option("--degree", o->degree, "Polynomial degree (SPEC 3.4: 3)")->check(CLI::Range(1, 3));
+        addCommonOptions(train, o);
+        train->callback([o] {
+            const VerbLibrary verbs = verbLibrary(*o);
+            const Corpus corpus = loadCorpus(o->corpusFile, verbs);
+            ModelOptions options;
+            options.degree = o->degree;
+            const TrainedVerbModels models = trainVerbModels(corpus, verbs, options);
+            writeFileAtomic(o->outPath, formatVerbModels(models));
+            std::printf("trained %zu verbs on %zu examples -> %s\n", models.verbs.size(), corpus.examples.size(),
+                        o->outPath.c_str());
+        });
+    }
+    // ---- verb -------------------------------------------------------------------------------
+    {
+        auto o = std::make_shared<VerbOptions>();
+        CLI::App* verb = commands.root.add_subcommand(
+            "verb",
+            "Synthesize one indicating verb for a subject and object on the signing arc (SPEC 3.7).\n"
+            "Arc positions are in [-1, 1]: -1 the signer's far left, 0 straight ahead, 1 far right\n"
+            "(the paper's example: subject 0.9, object -0.6). Versions: point and vector (the trained\n"
+            "models), animator (hand-authored keyframes in SCENES/animator/), uninflected (the citation\n"
+            "form, the same for every subject and object).\n"
+            "Example: signstim verb ASK --subject 0.9 --object -0.6 --version point --json");
+        verb->add_option("verb", o->verb, "Verb gloss: ASK, GIVE, MEET, SCOLD, TELL, COPY, EMAIL, SEND")->required();
+        verb->add_option("--subject", o->subject, "Subject's arc position (ignored by object-only verbs SCOLD, TELL)");
+        verb->add_option("--object", o->object, "Object's arc position")->required();
+        verb->add_option("--version", o->version, "point | vector | animator | uninflected")->required();
+        auto* jsonFlag = verb->add_flag("--json", o->json, "Print the keyframes (per hand: time, position, orientation, handshape) as JSON");
+        verb->add_option("--out", o->outPath, "Render to FILE.mp4 or a frame DIR (needs the avatar)")->excludes(jsonFlag);
+        verb->add_option("--models", o->modelsFile, "Trained models (default: SCENES/models/verb_models.json)");
+        addCommonOptions(verb, o);
+        verb->callback([o, verb] {
+            const std::optional<VerbVersion> version = parseVerbVersion(o->version);
+            if (!version)
+                throw InputError("<command line>", 0, "--version",
+                                 "'" + o->version + "' is not a version (point, vector, animator, uninflected)");
+            const VerbLibrary verbs = verbLibrary(*o);
+            const VerbDefinition& definition = verbs.get(o->verb, "<command line>", 0, "VERB");
+            checkArcPosition(o->object, "<command line>", "--object");
+            if (!definition.objectOnly()) {
+                if (verb->count("--subject") == 0)
+                    throw InputError("<command line>", 0, "--subject",
+                                     definition.name + " inflects for its subject too: give --subject S in [-1, 1]");
+                checkArcPosition(o->subject, "<command line>", "--subject");
+            }
+            if (!o->outPath.empty())
+                throw InputError("<command line>", 0, "--out",
+                                 "rendering verbs needs the avatar (not yet available); use --json for the keyframes");
+            const std::filesystem::path scenesDir = scenes(*o);
+            TrainedVerbModels models;
+            if (*version == VerbVersion::Point || *version == VerbVersion::Vector)
+                models = loadVerbModels(o->modelsFile.empty() ? scenesDir / "models" / "verb_models.json"
+                                                              : std::filesystem::path(o->modelsFile),
+                                        verbs);
+            const VerbSources sources{&verbs, &models, scenesDir / "animator"};
+            const VerbPerformance performance = synthesizeVerb(sources, definition.name, *version, o->subject, o->object);
+            if (o->json) std::fputs(formatPerformanceJson(performance).c_str(), stdout);
+            else printSummary(performance);
+        });
+    }
+    // ---- evaluate ---------------------------------------------------------------------------
+    {
+        auto o = std::make_shared<VerbOptions>();
+        CLI::App* evaluate = commands.root.add_subcommand(
+            "evaluate",
+            "Cross-validate the verb models on a corpus (SPEC 3.8): leave-one-out (LOO) and\n"
+            "leave-one-arc-position-out (LOPO) errors per verb and model - position (mm, per hand and\n"
+            "keyframe), direction of the right hand's movement (degrees) and orientation (degrees) -\n"
+            "beside the uninflected citation form and lower-order PointModels. Prints a Markdown table.\n"
+            "Example: signstim evaluate scenes/corpus/reference_corpus.csv");
+        evaluate->add_option("corpus", o->corpusFile, "Corpus CSV")->required();
+        addCommonOptions(evaluate, o);
+        evaluate->callback([o] {
+            const VerbLibrary verbs = verbLibrary(*o);
+            const Corpus corpus = loadCorpus(o->corpusFile, verbs);
+            std::fputs(formatEvaluationTable(evaluateVerbModels(corpus, verbs)).c_str(), stdout);
+        });
+    }
+    // ---- reference-corpus -------------------------------------------------------------------
+    {
+        auto o = std::make_shared<VerbOptions>();
+        CLI::App* reference = commands.root.add_subcommand(
+            "reference-corpus",
+            "Generate the synthetic reference corpus (SPEC 3.3): the parametric performer of\n"
+            "SCENES/corpus/reference_performer.json signs every verb for 7 arc positions x 6 others.\n"
+            "The output is labelled synthetic; it stands in for motion capture, which no public corpus\n"
+            "provides. Example: signstim reference-corpus --out scenes/corpus/reference_corpus.csv");
+        reference->add_option("--out", o->outPath, "Where to write the corpus CSV")->required();
+        reference->add_option("--performer", o->performerFile,
+                              "Performer parameters (default: SCENES/corpus/reference_performer.json)");
+        addCommonOptions(reference, o);
+        reference->callback([o] {
+            const VerbLibrary verbs = verbLibrary(*o);
+            const ReferencePerformer performer = loadReferencePerformer(
+                o->performerFile.empty() ? scenes(*o) / "corpus" / "reference_performer.json"
+                                         : std::filesystem::path(o->performerFile),
+                verbs);
+            const Corpus corpus = generateReferenceCorpus(performer, verbs);
+            writeFileAtomic(o->outPath, formatCorpus(corpus, verbs));
+            std::printf("wrote %zu synthetic examples -> %s\n", corpus.examples.size(), o->outPath.c_str());
+        });
+    }
+}
 
 }  // namespace signstim::app

@@ -74,6 +74,18 @@ double GaussianMixture::logDensity(const glm::dvec3& point) const {
     return logSumExp(terms);
 }
 
+double GaussianMixture::sumLogDensity(const std::vector<glm::dvec3>& points) const {
+    const std::vector<PreparedComponent> prepared = prepare(*this);
+    std::vector<double> terms(prepared.size());
+    double sum = 0.0;
+    for (const glm::dvec3& point : points) {
+        const Eigen::Vector3d x = toEigen(point);
+        for (std::size_t k = 0; k < prepared.size(); ++k) terms[k] = componentLogDensity(prepared[k], x);
+        sum += logSumExp(terms);
+    }
+    return sum;
+}
+
 MixtureFit fitGaussianMixture(const std::vector<glm::dvec3>& points, int componentCount,
                               const MixtureFitOptions& options) {
     const int n = static_cast<int>(points.size());

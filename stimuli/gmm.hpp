@@ -18,6 +18,8 @@ struct GaussianMixture {
     std::vector<GaussianComponent> components;
 
     double logDensity(const glm::dvec3& point) const;  // log p(point)
+    // Σ log p(point) over the points (factorises the covariances once).
+    double sumLogDensity(const std::vector<glm::dvec3>& points) const;
 };
 
 struct MixtureFitOptions {
