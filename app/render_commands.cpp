@@ -1,8 +1,262 @@
+// `signstim render-gltf`: renders a glTF file (optionally animated) to a PNG, a numbered PNG
+// sequence or an MP4.
 #include "app/commands.hpp"
 
-namespace signstim::app {
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "renderer/frame.hpp"
+#include "renderer/frame_sink.hpp"
+#include "renderer/gltf_loader.hpp"
+#include "renderer/renderer.hpp"
 
-// Owned by the render area; commands are added as the area lands.
-void registerRenderCommands(Commands&) {}
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+namespace signstim::app {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kCli = "<command line>";
+
+struct RenderGltfSettings {
+    std::string file, out, size = "640x480", fps = "30", animation, camera, background, device;
+    int frames = 0;  // 0: one per frame period over the animation, or 1 without animation
+    std::uint32_t msaa = 4;
+    int pngCompression = 1;
+    int bitDepth = 8;
+    bool quiet = false;
+};
+
+std::vector<float> parseFloats(const std::string& text, const std::string& field, std::size_t minCount,
+                               std::size_t maxCount) {
+    std::vector<float> values;
+    std::stringstream stream(text);
+    for (std::string item; std::getline(stream, item, ',');) {
+        try {
+            std::size_t used = 0;
+            const float v = std::stof(item, &used);
+            if (used != item.size() || !std::isfinite(v)) throw std::invalid_argument(item);
+            values.push_back(v);
+        } catch (const std::logic_error&) {
+            throw InputError(kCli, 0, field, "'" + item + "' is not a number (in '" + text + "')");
+        }
+    }
+    if (values.size() < minCount || values.size() > maxCount)
+        throw InputError(kCli, 0, field, "'" + text + "' needs " + std::to_string(minCount) +
+                                             (minCount == maxCount ? "" : "-" + std::to_string(maxCount)) +
+                                             " comma-separated numbers");
+    return values;
+}
+
+void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
+    unsigned w = 0, h = 0;
+    char tail = 0;
+    if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
+        throw InputError(kCli, 0, "--size", "'" + text + "' must be WIDTHxHEIGHT, e.g. 1280x720 (1..16384)");
+    width = w;
+    height = h;
+}
+
+float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
+// "#rrggbb", "r,g,b[,a]" (0..1, sRGB like the hex form) or "transparent" -> linear RGBA.
+glm::vec4 parseBackground(const std::string& text) {
+    if (text == "transparent") return glm::vec4(0.0f);
+    glm::vec4 srgb(1.0f);
+    if (!text.empty() && text[0] == '#') {
+        unsigned r, g, b;
+        char tail = 0;
+        if (text.size() != 7 || std::sscanf(text.c_str() + 1, "%2x%2x%2x%c", &r, &g, &b, &tail) != 3)
+            throw InputError(kCli, 0, "--background", "'" + text + "' must be #rrggbb, r,g,b[,a] or transparent");
+        srgb = glm::vec4(r / 255.0f, g / 255.0f, b / 255.0f, 1.0f);
+    } else {
+        const std::vector<float> v = parseFloats(text, "--background", 3, 4);
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            if (v[i] < 0.0f || v[i] > 1.0f)
+                throw InputError(kCli, 0, "--background", "'" + text + "': components are 0..1");
+            srgb[static_cast<int>(i)] = v[i];
+        }
+    }
+    return glm::vec4(srgbToLinear(srgb.r), srgbToLinear(srgb.g), srgbToLinear(srgb.b), srgb.a);
+}
+
+// "eye=x,y,z;target=x,y,z;up=x,y,z;fov=deg" — every key optional; unset keys keep `camera`.
+render::Camera parseCamera(const std::string& text, render::Camera camera) {
+    std::stringstream stream(text);
+    for (std::string item; std::getline(stream, item, ';');) {
+        if (item.empty()) continue;
+        const std::size_t eq = item.find('=');
+        const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+        if (key == "eye" || key == "target" || key == "up") {
+            const std::vector<float> v = parseFloats(value, "--camera " + key, 3, 3);
+            (key == "eye" ? camera.eye : key == "target" ? camera.target : camera.up) = glm::vec3(v[0], v[1], v[2]);
+        } else if (key == "fov") {
+            const float fov = parseFloats(value, "--camera fov", 1, 1)[0];
+            if (fov <= 1.0f || fov >= 179.0f) throw InputError(kCli, 0, "--camera", "fov must be in (1, 179) degrees");
+            camera.verticalFovDegrees = fov;
+        } else {
+            throw InputError(kCli, 0, "--camera", "unknown key '" + key + "' (use eye=x,y,z;target=x,y,z;up=x,y,z;fov=deg)");
+        }
+    }
+    if (glm::length(camera.eye - camera.target) < 1e-6f)
+        throw InputError(kCli, 0, "--camera", "eye and target must differ");
+    const float distance = glm::length(camera.eye - camera.target);
+    camera.farPlane = std::max(camera.farPlane, distance * 4.0f);
+    camera.nearPlane = std::min(camera.nearPlane, distance * 0.05f);
+    return camera;
+}
+
+int chooseAnimation(const render::Scene& scene, const std::string& request, const std::string& file) {
+    if (request.empty()) return scene.animations.empty() ? -1 : 0;
+    if (const int byName = scene.findAnimation(request); byName >= 0) return byName;
+    const bool numeric = std::all_of(request.begin(), request.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (numeric && request.size() < 9 && std::stoul(request) < scene.animations.size()) return std::stoi(request);
+    std::string names;
+    for (std::size_t i = 0; i < scene.animations.size(); ++i)
+        names += (i ? ", " : "") + std::to_string(i) + " '" + scene.animations[i].name + "'";
+    throw InputError(kCli, 0, "--animation",
+                     "'" + request + "' is not an animation of " + file +
+                         (names.empty() ? " (it has none)" : " (it has: " + names + ")"));
+}
+
+std::string lowerExtension(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+void renderGltf(const RenderGltfSettings& s) {
+    using Clock = std::chrono::steady_clock;
+    render::RendererOptions options;
+    parseSize(s.size, options.width, options.height);
+    options.msaa = s.msaa;
+    options.device = s.device;
+    if (s.bitDepth != 8 && s.bitDepth != 16) throw InputError(kCli, 0, "--bit-depth", "must be 8 or 16");
+    options.format = s.bitDepth == 16 ? render::PixelFormat::Rgba16 : render::PixelFormat::Rgba8;
+    if (!s.background.empty()) options.background = parseBackground(s.background);
+    if (s.pngCompression < 0 || s.pngCompression > 9) throw InputError(kCli, 0, "--png-compression", "must be 0..9");
+    render::VideoOptions video;
+    video.frameRate = render::parseFrameRate(s.fps);
+
+    const render::Scene scene = render::loadGltf(s.file);
+    const int animation = chooseAnimation(scene, s.animation, s.file);
+    const float duration = animation >= 0 ? scene.animations[static_cast<std::size_t>(animation)].durationSeconds : 0.0f;
+
+    const fs::path out = s.out;
+    const std::string ext = lowerExtension(out);
+    const bool singleImage = ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff";
+    int frames = s.frames;
+    if (frames < 0) throw InputError(kCli, 0, "--frames", "must be at least 1");
+    if (frames == 0)
+        frames = singleImage || duration <= 0.0f ? 1 : static_cast<int>(std::ceil(duration * video.frameRate.value() - 1e-4)) + 1;
+    if (singleImage && frames > 1)
+        throw InputError(out.string(), 0, "--frames", std::to_string(frames) +
+                                                          " frames need a directory or an .mp4 output, not a single image");
+    if (ext == ".mp4" && (options.width % 2 || options.height % 2))
+        throw InputError(kCli, 0, "--size", s.size + ": MP4 (H.264, yuv420p) needs an even width and height");
+    // Fail on a bad output location now, not after rendering.
+    ensureWritableDirectory(singleImage || ext == ".mp4" ? out.parent_path() : out);
+
+    // Frame i shows the animation at duration * i / (frames - 1): first and last key included.
+    auto timeOf = [&](int i) { return frames > 1 ? duration * static_cast<float>(i) / static_cast<float>(frames - 1) : 0.0f; };
+    auto poseAt = [&](int i) {
+        render::Pose pose = render::restPose(scene);
+        if (animation >= 0) render::applyAnimation(scene, animation, timeOf(i), pose);
+        return pose;
+    };
+    // One fixed camera framing the union of the posed bounds (at most 64 samples).
+    render::Bounds bounds;
+    const int samples = std::min(frames, 64);
+    for (int k = 0; k < samples; ++k) {
+        const int i = samples > 1 ? k * (frames - 1) / (samples - 1) : 0;
+        const render::Bounds b = render::computeBounds(scene, poseAt(i));
+        if (!b.empty) {
+            bounds.add(b.min);
+            bounds.add(b.max);
+        }
+    }
+    const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+    render::Camera camera = render::frameBounds(bounds, aspect);
+    if (!s.camera.empty()) camera = parseCamera(s.camera, camera);
+
+    render::ImageWriteOptions imageOptions;
+    imageOptions.pngCompression = s.pngCompression;
+    imageOptions.alpha = options.background.a < 1.0f;
+    render::Renderer renderer(options);
+    const int handle = renderer.addScene(scene);
+    std::unique_ptr<render::FrameSink> sink = render::makeFrameSink(out, imageOptions, video);
+
+    auto frameAt = [&](int i) {
+        render::Frame frame;
+        frame.views.push_back(render::View{handle, poseAt(i), camera, ""});
+        return frame;
+    };
+    const auto start = Clock::now();
+    auto lastReport = start;
+    auto report = [&](int done, bool final) {
+        if (s.quiet) return;
+        const auto now = Clock::now();
+        if (!final && now - lastReport < std::chrono::milliseconds(500)) return;
+        lastReport = now;
+        const double seconds = std::chrono::duration<double>(now - start).count();
+        std::fprintf(stderr, "\rrender-gltf: %d/%d frames, %.1f fps", done, frames, seconds > 0 ? done / seconds : 0.0);
+        if (final) std::fprintf(stderr, "\n");
+        std::fflush(stderr);
+    };
+    // Pipelined: keep the renderer's frames in flight busy while the sink encodes.
+    const int inFlight = static_cast<int>(std::max(1u, renderer.framesInFlight()));
+    int submitted = 0, done = 0;
+    while (done < frames) {
+        while (submitted < frames && submitted - done < inFlight) renderer.submit(frameAt(submitted++));
+        render::Image image;
+        renderer.retrieve(image);
+        sink->push(std::move(image));
+        ++done;
+        report(done, false);
+    }
+    const std::vector<std::string> messages = renderer.validationMessages();
+    if (!messages.empty()) {
+        for (const std::string& m : messages) std::fprintf(stderr, "signstim: validation: %s\n", m.c_str());
+        throw std::runtime_error(std::to_string(messages.size()) + " Vulkan validation message(s); output not written");
+    }
+    sink->finish();
+    report(done, true);
+}
+
+}  // namespace
+
+void registerRenderCommands(Commands& commands) {
+    auto settings = std::make_shared<RenderGltfSettings>();
+    CLI::App* cmd = commands.root.add_subcommand(
+        "render-gltf",
+        "Render a glTF 2.0 file (.gltf/.glb) to a PNG, a PNG sequence directory or an MP4.\n"
+        "Frames sample the chosen animation evenly from its start to its end.");
+    cmd->add_option("FILE", settings->file, "glTF file (.gltf with external or embedded buffers, or .glb)")->required();
+    cmd->add_option("--out,-o", settings->out,
+                    "OUT.png (one frame), OUT.mp4 (H.264 video) or a directory (frame_00001.png ...)")
+        ->required();
+    cmd->add_option("--size", settings->size, "WIDTHxHEIGHT (default 640x480; even for MP4)");
+    cmd->add_option("--frames", settings->frames,
+                    "number of frames (default: duration x fps + 1 with an animation, else 1)");
+    cmd->add_option("--fps", settings->fps, "frame rate: 30, 25, 30000/1001 or 29.97 (default 30)");
+    cmd->add_option("--msaa", settings->msaa, "multisampling 1 or 4 (default 4)")->check(CLI::IsMember({1, 4}));
+    cmd->add_option("--animation", settings->animation, "animation name or index (default: the first, if any)");
+    cmd->add_option("--camera", settings->camera,
+                    "'eye=x,y,z;target=x,y,z;up=x,y,z;fov=deg', any subset (default: frames the scene bounds "
+                    "from +Z, 30 degree vertical field of view)");
+    cmd->add_option("--background", settings->background,
+                    "#rrggbb, r,g,b[,a] (sRGB 0..1) or transparent (PNG with alpha)");
+    cmd->add_option("--device", settings->device, "Vulkan device: name substring or index (see `signstim devices`)");
+    cmd->add_option("--png-compression", settings->pngCompression, "zlib level 0..9 (default 1: fast)");
+    cmd->add_option("--bit-depth", settings->bitDepth, "8 or 16 bits per channel (PNG)");
+    cmd->add_flag("--quiet,-q", settings->quiet, "no progress on stderr");
+    cmd->callback([settings] { renderGltf(*settings); });
+}
 
 }  // namespace signstim::app

@@ -423,10 +423,10 @@ private:
             std::uint64_t decoded = payload / 4 * 3;
             if (payload >= 1 && text.back() == '=') --decoded;
             if (payload >= 2 && text[text.size() - 2] == '=') --decoded;
-            if (byteLength != decoded)
+            if (byteLength != decoded)  // tinygltf needs an exact match for data URIs
                 fail(f + ".byteLength", "byteLength " + std::to_string(byteLength) +
-                                            " does not match the " + std::to_string(decoded) +
-                                            " bytes of the embedded data URI");
+                                            (byteLength > decoded ? " exceeds the " : " does not match the ") +
+                                            std::to_string(decoded) + " bytes of the embedded data URI");
             return;
         }
         const std::uint64_t size = checkExternalFile(text, f + ".uri");
