@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cstring>
 #include <deque>
+#include <map>
 #include <stdexcept>
 
 namespace signstim::render {
@@ -103,7 +104,9 @@ struct Renderer::Impl {
     std::unique_ptr<vk::CommandPool> commands;
     vk::UniqueDescriptorSetLayout frameLayout, materialLayout;
     vk::UniquePipelineLayout pipelineLayout;
-    vk::UniquePipeline opaquePipeline, blendPipeline;
+    vk::UniqueShaderModule vertexShader, fragmentShader;
+    vk::PipelineDesc pipelineDesc;
+    std::map<std::uint32_t, vk::UniquePipeline> pipelines;  // by pipelineKey()
     vk::Buffer lighting;
     vk::UniqueDescriptorPool framePool;
     std::vector<Slot> slots;
@@ -120,7 +123,9 @@ struct Renderer::Impl {
     }
 
     void checkOptions(const vk::PhysicalDevice& physical);
-    void createPipelines(VkFormat colorFormat, VkFormat depthFormat);
+    void createPipelineLayout(VkFormat colorFormat, VkFormat depthFormat);
+    static std::uint32_t pipelineKey(const vk::GpuMaterial& material);
+    VkPipeline pipelineFor(const vk::GpuMaterial& material);
     void validateFrame(const Frame& frame) const;
     void recordFrame(Slot& slot, const Frame& frame);
     void ensureMatrixCapacity(Slot& slot, std::size_t count);
@@ -158,7 +163,7 @@ void Renderer::Impl::checkOptions(const vk::PhysicalDevice& physical) {
                              "' supports " + joinCounts(supported));
 }
 
-void Renderer::Impl::createPipelines(VkFormat colorFormat, VkFormat depthFormat) {
+void Renderer::Impl::createPipelineLayout(VkFormat colorFormat, VkFormat depthFormat) {
     VkDevice dev = device->get();
     frameLayout = vk::createSetLayout(
         dev, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
@@ -171,11 +176,11 @@ void Renderer::Impl::createPipelines(VkFormat colorFormat, VkFormat depthFormat)
         dev, {frameLayout.get(), materialLayout.get()},
         {{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(PushConstants)}});
 
-    auto vertex = vk::createShaderModule(dev, mesh_vert_spv, sizeof(mesh_vert_spv));
-    auto fragment = vk::createShaderModule(dev, mesh_frag_spv, sizeof(mesh_frag_spv));
-    vk::PipelineDesc desc;
-    desc.vertex = vertex.get();
-    desc.fragment = fragment.get();
+    vertexShader = vk::createShaderModule(dev, mesh_vert_spv, sizeof(mesh_vert_spv));
+    fragmentShader = vk::createShaderModule(dev, mesh_frag_spv, sizeof(mesh_frag_spv));
+    vk::PipelineDesc& desc = pipelineDesc;
+    desc.vertex = vertexShader.get();
+    desc.fragment = fragmentShader.get();
     desc.bindings = {{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.attributes = {
         {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, position))},
@@ -187,10 +192,33 @@ void Renderer::Impl::createPipelines(VkFormat colorFormat, VkFormat depthFormat)
     desc.colorFormat = colorFormat;
     desc.depthFormat = depthFormat;
     desc.samples = static_cast<VkSampleCountFlagBits>(options.msaa);
-    opaquePipeline = vk::createGraphicsPipeline(dev, pipelineLayout.get(), desc);
-    desc.blend = true;
-    desc.depthWrite = false;  // blended surfaces test against, but do not hide, each other
-    blendPipeline = vk::createGraphicsPipeline(dev, pipelineLayout.get(), desc);
+}
+
+// Bits: 0 blend, 1 base colour texture, 2 metallic-roughness texture, 3 alpha mask.
+std::uint32_t Renderer::Impl::pipelineKey(const vk::GpuMaterial& material) {
+    return (material.alphaMode == AlphaMode::Blend ? 1u : 0u) |
+           (material.hasBaseColorTexture ? 2u : 0u) |
+           (material.hasMetallicRoughnessTexture ? 4u : 0u) |
+           (material.alphaMode == AlphaMode::Mask ? 8u : 0u);
+}
+
+VkPipeline Renderer::Impl::pipelineFor(const vk::GpuMaterial& material) {
+    const std::uint32_t key = pipelineKey(material);
+    auto found = pipelines.find(key);
+    if (found != pipelines.end()) return found->second.get();
+    // Specialisation constants of shaders/mesh.frag (bools are 32-bit in SPIR-V).
+    const VkBool32 constants[3] = {(key & 2u) ? VK_TRUE : VK_FALSE, (key & 4u) ? VK_TRUE : VK_FALSE,
+                                   (key & 8u) ? VK_TRUE : VK_FALSE};
+    const VkSpecializationMapEntry entries[3] = {{0, 0, sizeof(VkBool32)},
+                                                 {1, sizeof(VkBool32), sizeof(VkBool32)},
+                                                 {2, 2 * sizeof(VkBool32), sizeof(VkBool32)}};
+    const VkSpecializationInfo specialization{3, entries, sizeof(constants), constants};
+    vk::PipelineDesc desc = pipelineDesc;
+    desc.fragmentSpecialization = &specialization;
+    desc.blend = (key & 1u) != 0;
+    desc.depthWrite = !desc.blend;  // blended surfaces test against, but do not hide, others
+    auto pipeline = vk::createGraphicsPipeline(device->get(), pipelineLayout.get(), desc);
+    return pipelines.emplace(key, std::move(pipeline)).first->second.get();
 }
 
 void Renderer::Impl::ensureMatrixCapacity(Slot& slot, std::size_t count) {
@@ -354,14 +382,17 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
         vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
         vkCmdBindIndexBuffer(cmd, view.scene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
 
-        auto drawRange = [&](const std::vector<Draw>& draws, std::size_t from, std::size_t to,
-                             VkPipeline pipeline) {
-            if (from == to) return;
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+        auto drawRange = [&](const std::vector<Draw>& draws, std::size_t from, std::size_t to) {
             PushConstants push = view.push;
+            VkPipeline bound = VK_NULL_HANDLE;
             for (std::size_t i = from; i < to; ++i) {
                 const Draw& draw = draws[i];
                 const vk::GpuMaterial& material = view.scene->material(draw.primitive->material);
+                VkPipeline pipeline = pipelineFor(material);
+                if (pipeline != bound) {
+                    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+                    bound = pipeline;
+                }
                 vkCmdSetCullMode(cmd, material.doubleSided ? VK_CULL_MODE_NONE
                                                            : VK_CULL_MODE_BACK_BIT);
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
@@ -375,8 +406,8 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
                                  draw.primitive->vertexOffset, 0);
             }
         };
-        drawRange(opaqueDraws, view.opaqueBegin, view.opaqueEnd, opaquePipeline.get());
-        drawRange(blendDraws, view.blendBegin, view.blendEnd, blendPipeline.get());
+        drawRange(opaqueDraws, view.opaqueBegin, view.opaqueEnd);
+        drawRange(blendDraws, view.blendBegin, view.blendEnd);
     }
     slot.target->endRenderingAndCopy(cmd);
     vk::check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
@@ -384,9 +415,11 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
 
 std::vector<DeviceInfo> Renderer::listDevices() {
     vk::Instance instance(false);
+    const auto devices = vk::enumeratePhysicalDevices(instance.get());
+    const int automatic = vk::automaticChoice(devices);
     std::vector<DeviceInfo> result;
-    for (auto& device : vk::enumeratePhysicalDevices(instance.get()))
-        result.push_back(device.info);
+    for (const auto& device : devices) result.push_back(device.info);
+    if (automatic >= 0) result[static_cast<std::size_t>(automatic)].automatic = true;
     return result;
 }
 
@@ -397,13 +430,15 @@ Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl
     const auto physicalDevices = vk::enumeratePhysicalDevices(r.instance->get());
     const vk::PhysicalDevice& physical = vk::selectPhysicalDevice(physicalDevices, options.device);
     r.info = physical.info;
+    r.info.automatic = vk::automaticChoice(physicalDevices) ==
+                       static_cast<int>(&physical - physicalDevices.data());
     r.device = std::make_unique<vk::Device>(physical);
     r.checkOptions(physical);
 
     r.commands = std::make_unique<vk::CommandPool>(*r.device);
     const VkFormat colorFormat = vk::colorFormatFor(options.format);
     const VkFormat depthFormat = vk::chooseDepthFormat(*r.device);
-    r.createPipelines(colorFormat, depthFormat);
+    r.createPipelineLayout(colorFormat, depthFormat);
 
     LightingUniform lighting = lightingUniform(options.lighting);
     r.lighting = vk::createBuffer(*r.device, sizeof(LightingUniform),
@@ -452,6 +487,8 @@ int Renderer::addScene(const Scene& scene) {
     }
     impl_->scenes.push_back(std::make_unique<vk::GpuScene>(*impl_->device, *impl_->commands, scene,
                                                            impl_->materialLayout.get()));
+    // Compile the scene's pipeline variants now rather than on the first frame.
+    for (const auto& material : impl_->scenes.back()->materials()) impl_->pipelineFor(material);
     return static_cast<int>(impl_->scenes.size() - 1);
 }
 

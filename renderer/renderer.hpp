@@ -23,6 +23,7 @@ struct DeviceInfo {
     std::string apiVersion;  // "1.3.230"
     std::vector<std::uint32_t> sampleCounts;  // supported colour+depth MSAA counts
     bool usable = false;     // Vulkan 1.3 with dynamic rendering and synchronization2
+    bool automatic = false;  // the device chosen when RendererOptions::device is empty
 };
 
 struct Lighting {

@@ -38,6 +38,7 @@ UniquePipeline createGraphicsPipeline(VkDevice device, VkPipelineLayout layout,
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].module = desc.fragment;
     stages[1].pName = "main";
+    stages[1].pSpecializationInfo = desc.fragmentSpecialization;
 
     auto vertexInput = make<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
     vertexInput.vertexBindingDescriptionCount = static_cast<std::uint32_t>(desc.bindings.size());

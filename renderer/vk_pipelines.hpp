@@ -24,6 +24,7 @@ struct PipelineDesc {
     bool blend = false;  // straight alpha "over"
     bool dynamicCullMode = true;
     VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;  // when not dynamic
+    const VkSpecializationInfo* fragmentSpecialization = nullptr;
 };
 
 UniquePipeline createGraphicsPipeline(VkDevice device, VkPipelineLayout layout,

@@ -242,6 +242,8 @@ GpuScene::GpuScene(const Device& device, const CommandPool& commands, Scene scen
         GpuMaterial gpu;
         gpu.alphaMode = material.alphaMode;
         gpu.doubleSided = material.doubleSided;
+        gpu.hasBaseColorTexture = baseTexture != nullptr;
+        gpu.hasMetallicRoughnessTexture = mrTexture != nullptr;
         gpu.set = allocateSet(device.get(), descriptorPool_.get(), materialLayout);
         DescriptorWriter()
             .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, materialUniforms_.back().buffer.get(),

@@ -30,6 +30,7 @@ struct GpuPrimitive {
 struct GpuMaterial {
     AlphaMode alphaMode = AlphaMode::Opaque;
     bool doubleSided = false;
+    bool hasBaseColorTexture = false, hasMetallicRoughnessTexture = false;
     VkDescriptorSet set = VK_NULL_HANDLE;
 };
 
@@ -45,6 +46,7 @@ public:
         return meshes_[static_cast<std::size_t>(mesh)];
     }
     const GpuMaterial& material(std::uint32_t index) const { return materials_[index]; }
+    const std::vector<GpuMaterial>& materials() const { return materials_; }
     std::size_t triangleCount() const { return triangles_; }
 
 private:
