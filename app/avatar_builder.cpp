@@ -445,9 +445,9 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
     const int hips = sk.add("hips", -1, d.hipsM);
     const int spine = sk.add("spine", hips, {0.0f, 0.12f, 0.0f});
     const int chest = sk.add("chest", spine, d.chestM - d.hipsM - glm::vec3(0.0f, 0.12f, 0.0f));
-    const int neck = sk.add("neck", chest, {0.0f, 0.17f, -0.01f});
-    const int head = sk.add("head", neck, {0.0f, 0.11f, 0.01f});
-    const glm::vec3 headWorld = d.chestM + glm::vec3(0.0f, 0.28f, 0.0f);
+    const int neck = sk.add("neck", chest, {0.0f, 0.15f, -0.01f});
+    const int head = sk.add("head", neck, {0.0f, 0.09f, 0.01f});
+    const glm::vec3 headWorld = d.chestM + glm::vec3(0.0f, 0.24f, 0.0f);
     const glm::vec3 eyeLocal{0.032f, 0.115f, 0.078f};
     const int leftEye = sk.add("leftEye", head, eyeLocal);
     const int rightEye = sk.add("rightEye", head, {-eyeLocal.x, eyeLocal.y, eyeLocal.z});
@@ -555,15 +555,15 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
     // Neck (skin) from inside the torso into the head.
     {
         std::vector<Ring> rings;
-        for (float y = 1.40f; y <= 1.645f; y += 0.015f) {
+        for (float y = 1.40f; y <= 1.605f; y += 0.015f) {
             Ring r;
-            r.center = {0.0f, y, -0.008f + 0.01f * smoothstep(1.45f, 1.62f, y)};
+            r.center = {0.0f, y, -0.008f + 0.01f * smoothstep(1.45f, 1.58f, y)};
             r.u = {0, 0, 1};
             r.v = {1, 0, 0};
             r.ru = 0.050f - 0.006f * smoothstep(1.45f, 1.6f, y);
             r.rv = 0.054f - 0.006f * smoothstep(1.45f, 1.6f, y);
-            r.weights = Weights::blend(Weights::blend(Weights(chest), Weights(neck), smoothstep(1.44f, 1.50f, y)),
-                                       Weights(head), smoothstep(1.56f, 1.62f, y));
+            r.weights = Weights::blend(Weights::blend(Weights(chest), Weights(neck), smoothstep(1.42f, 1.48f, y)),
+                                       Weights(head), smoothstep(1.52f, 1.58f, y));
             rings.push_back(r);
         }
         mesh.tube(kSkin, rings, 20, 0.0f, 0.0f);

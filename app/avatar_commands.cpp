@@ -1,8 +1,215 @@
+// `signstim avatar build`, `signstim handshapes --gallery`, `signstim pose`: the default signer,
+// its handshape gallery and one posture of it (docs: app/avatar_builder.hpp, signer_pose.hpp).
+#include "app/avatar_builder.hpp"
+#include "app/avatar_render.hpp"
 #include "app/commands.hpp"
+#include "app/signer_pose.hpp"
+#include "common/error.hpp"
+#include "renderer/gltf_loader.hpp"
+#include "renderer/gltf_writer.hpp"
+#include "renderer/image_io.hpp"
+#include "renderer/renderer.hpp"
+#include "stimuli/handshapes.hpp"
+#include "stimuli/scenes_path.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
 
 namespace signstim::app {
+namespace {
 
-// Owned by the avatar area; commands are added as the area lands.
-void registerAvatarCommands(Commands&) {}
+struct AvatarSource {
+    std::string scenesDir, avatarFile, boneMapFile;
+};
+
+void addAvatarOptions(CLI::App* command, AvatarSource& o) {
+    command->add_option("--scenes", o.scenesDir,
+                        "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ beside signstim, else the "
+                        "source tree's)");
+    command->add_option("--avatar", o.avatarFile,
+                        "Your own avatar (.glb/.gltf): a T-pose skeleton facing +Z with VRM humanoid bone "
+                        "names (default: SCENES/avatar/signer.glb)");
+    command->add_option("--bone-map", o.boneMapFile,
+                        "JSON {\"vrmBoneName\": \"yourNodeName\", ...} for an avatar without VRM names");
+}
+
+render::Scene loadAvatar(const AvatarSource& o) {
+    const std::filesystem::path path = o.avatarFile.empty()
+                                           ? defaultAvatarPath(stimuli::resolveScenesDir(o.scenesDir))
+                                           : std::filesystem::path(o.avatarFile);
+    if (!std::filesystem::exists(path))
+        throw InputError(path.string(), 0, "--avatar", "no such file");
+    render::Scene scene = render::loadGltf(path);
+    scene.sourceName = path.string();
+    return scene;
+}
+
+BoneMapping mappingOf(const AvatarSource& o) { return o.boneMapFile.empty() ? BoneMapping{} : loadBoneMapping(o.boneMapFile); }
+
+glm::vec3 parseTriple(const std::string& text, const std::string& flag) {
+    std::stringstream in(text);
+    glm::vec3 v(0.0f);
+    char comma1 = 0, comma2 = 0;
+    if (!(in >> v.x >> comma1 >> v.y >> comma2 >> v.z) || comma1 != ',' || comma2 != ',' || !in.eof() ||
+        !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+        throw InputError("<command line>", 0, flag, "expected three numbers x,y,z, got '" + text + "'");
+    return v;
+}
+
+void parseSize(const std::string& text, std::uint32_t& w, std::uint32_t& h) {
+    unsigned width = 0, height = 0;
+    char x = 0;
+    std::stringstream in(text);
+    if (!(in >> width >> x >> height) || (x != 'x' && x != 'X') || !in.eof() || width < 16 || height < 16 ||
+        width > 8192 || height > 8192)
+        throw InputError("<command line>", 0, "--size", "expected WxH between 16 and 8192, got '" + text + "'");
+    w = width;
+    h = height;
+}
+
+// An extra hand rotation given as a rotation vector in degrees in the signing-space frame.
+glm::quat signingSpaceRotation(const glm::vec3& rotationVectorDeg) {
+    const float angle = glm::length(rotationVectorDeg);
+    if (angle < 1e-6f) return glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+    return bodyFromSigningSpace(glm::angleAxis(angle * 3.14159265f / 180.0f, rotationVectorDeg / angle));
+}
+
+void renderToFile(const render::Scene& scene, const std::function<render::Frame(int)>& makeFrame,
+                  std::uint32_t width, std::uint32_t height, const std::string& device, std::uint32_t msaa,
+                  const std::string& out) {
+    render::RendererOptions options;
+    options.width = width;
+    options.height = height;
+    options.device = device;
+    options.msaa = msaa;
+    options.background = kSignerBackground;
+    render::Renderer renderer(options);
+    const int handle = renderer.addScene(scene);
+    render::Image image;
+    renderer.render(makeFrame(handle), image);
+    render::writeImage(image, out);
+}
+
+void reportArm(const char* side, const hand::ArmPose& arm) {
+    if (!arm.reachable)
+        std::fprintf(stderr, "signstim: note: %s wrist target out of reach: placed %.0f mm from it\n", side,
+                     arm.reachErrorMm);
+    if (arm.orientationErrorDeg > 2.0f)
+        std::fprintf(stderr, "signstim: note: %s hand orientation limited by the wrist: %.0f° from the target\n",
+                     side, arm.orientationErrorDeg);
+}
+
+}  // namespace
+
+void registerAvatarCommands(Commands& commands) {
+    // avatar build
+    CLI::App* avatar = commands.root.add_subcommand("avatar", "The default signer avatar");
+    avatar->require_subcommand(1);
+    auto buildOut = std::make_shared<std::string>();
+    CLI::App* build = avatar->add_subcommand(
+        "build", "Generate the default signer (glTF: .glb or .gltf); scenes/avatar/signer.glb is its output");
+    build->add_option("--out", *buildOut, "Output file (.glb or .gltf)")->required();
+    build->callback([buildOut] {
+        render::writeGltf(buildDefaultAvatar(), *buildOut);
+        std::printf("%s\n", buildOut->c_str());
+    });
+
+    // handshapes --gallery
+    struct GalleryOptions {
+        AvatarSource source;
+        std::string gallery, shapesFile, device;
+        std::uint32_t columns = 7, cell = 200, msaa = 4;
+    };
+    auto g = std::make_shared<GalleryOptions>();
+    CLI::App* shapes = commands.root.add_subcommand(
+        "handshapes", "Render every handshape of the library as a labelled grid (right hand, close-up)");
+    shapes->add_option("--gallery", g->gallery, "Output image (.png)")->required();
+    shapes->add_option("--shapes", g->shapesFile, "Handshape file (default: SCENES/handshapes.json)");
+    shapes->add_option("--columns", g->columns, "Shapes per row")->check(CLI::Range(1u, 64u));
+    shapes->add_option("--cell", g->cell, "Size of one cell in pixels")->check(CLI::Range(32u, 1024u));
+    shapes->add_option("--device", g->device, "Vulkan device (name substring or index; see `signstim devices`)");
+    shapes->add_option("--msaa", g->msaa, "Multisampling: 1 or 4");
+    addAvatarOptions(shapes, g->source);
+    shapes->callback([g] {
+        const render::Scene scene = loadAvatar(g->source);
+        const SignerRig rig(scene, mappingOf(g->source));
+        const std::filesystem::path file = g->shapesFile.empty()
+                                               ? stimuli::resolveScenesDir(g->source.scenesDir) / "handshapes.json"
+                                               : std::filesystem::path(g->shapesFile);
+        const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(file, rig.handModel());
+        const std::uint32_t rows = static_cast<std::uint32_t>((library.shapes.size() + g->columns - 1) / g->columns);
+        renderToFile(scene, [&](int handle) { return galleryFrame(scene, rig, handle, library, g->columns); },
+                     g->columns * g->cell, rows * g->cell, g->device, g->msaa, g->gallery);
+        std::printf("%s: %zu handshapes\n", g->gallery.c_str(), library.shapes.size());
+    });
+
+    // pose
+    struct PoseOptions {
+        AvatarSource source;
+        std::string right, left, rightWrist, leftWrist, rightRotation, leftRotation, gaze, out, size = "640x480",
+                                                                                          shapesFile, device;
+        std::uint32_t msaa = 4;
+    };
+    auto p = std::make_shared<PoseOptions>();
+    CLI::App* pose = commands.root.add_subcommand(
+        "pose", "Render the signer in one posture (waist-up). Positions are in the signing-space frame of "
+                "SPEC §3.1: millimetres from the chest centre, +x the signer's right, +y up, +z forward");
+    pose->add_option("--right", p->right, "Right handshape (see `signstim hand shapes`)")->required();
+    pose->add_option("--left", p->left, "Left handshape (default: the left hand rests)");
+    pose->add_option("--right-wrist", p->rightWrist, "Right wrist x,y,z in mm (default: beside the right shoulder)");
+    pose->add_option("--left-wrist", p->leftWrist, "Left wrist x,y,z in mm (default: beside the left shoulder)");
+    pose->add_option("--right-rotation", p->rightRotation,
+                     "Extra right-hand rotation: rotation vector in degrees (signing-space axes) applied to the "
+                     "default palm-forward, fingers-up orientation");
+    pose->add_option("--left-rotation", p->leftRotation, "The same for the left hand");
+    pose->add_option("--gaze", p->gaze, "Look at x,y,z in mm (default: straight ahead)");
+    pose->add_option("--out", p->out, "Output image (.png)")->required();
+    pose->add_option("--size", p->size, "Image size WxH");
+    pose->add_option("--shapes", p->shapesFile, "Handshape file (default: SCENES/handshapes.json)");
+    pose->add_option("--device", p->device, "Vulkan device (name substring or index)");
+    pose->add_option("--msaa", p->msaa, "Multisampling: 1 or 4");
+    addAvatarOptions(pose, p->source);
+    pose->callback([p] {
+        std::uint32_t width = 0, height = 0;
+        parseSize(p->size, width, height);
+        const render::Scene scene = loadAvatar(p->source);
+        const SignerRig rig(scene, mappingOf(p->source));
+        const std::filesystem::path file = p->shapesFile.empty()
+                                               ? stimuli::resolveScenesDir(p->source.scenesDir) / "handshapes.json"
+                                               : std::filesystem::path(p->shapesFile);
+        const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(file, rig.handModel());
+        SignerPosture posture;
+        posture.rightHand = library.at(p->right).controls;
+        hand::ArmTarget right = rig.presentingTarget(hand::Side::Right);
+        if (!p->rightWrist.empty()) right.wristMm = bodyFromSigningSpace(parseTriple(p->rightWrist, "--right-wrist"));
+        if (!p->rightRotation.empty())
+            right.handRotation = signingSpaceRotation(parseTriple(p->rightRotation, "--right-rotation")) * right.handRotation;
+        posture.rightWrist = right;
+        if (!p->left.empty() || !p->leftWrist.empty()) {
+            if (!p->left.empty()) posture.leftHand = library.at(p->left).controls;
+            hand::ArmTarget left = rig.presentingTarget(hand::Side::Left);
+            if (!p->leftWrist.empty()) left.wristMm = bodyFromSigningSpace(parseTriple(p->leftWrist, "--left-wrist"));
+            if (!p->leftRotation.empty())
+                left.handRotation = signingSpaceRotation(parseTriple(p->leftRotation, "--left-rotation")) * left.handRotation;
+            posture.leftWrist = left;
+        }
+        if (!p->gaze.empty()) posture.gazeMm = bodyFromSigningSpace(parseTriple(p->gaze, "--gaze"));
+        PoseReport report;
+        renderToFile(scene,
+                     [&](int handle) {
+                         return postureFrame(scene, rig, handle, posture,
+                                             static_cast<float>(width) / static_cast<float>(height), &report);
+                     },
+                     width, height, p->device, p->msaa, p->out);
+        reportArm("right", report.right);
+        if (posture.leftWrist) reportArm("left", report.left);
+        std::printf("%s\n", p->out.c_str());
+    });
+}
 
 }  // namespace signstim::app

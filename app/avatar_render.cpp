@@ -1,0 +1,67 @@
+#include "app/avatar_render.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <vector>
+
+namespace signstim::app {
+
+render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect) {
+    render::Camera camera;
+    camera.verticalFovDegrees = 30.0f;
+    // Visible height ≈ 1.05 m: from below the waist to above the head; wider views see the
+    // arms' full reach.
+    const float height = aspect >= 1.0f ? 1.05f : 1.05f / aspect * 0.8f;
+    const float distance = 0.5f * height / std::tan(0.5f * camera.verticalFovDegrees * 3.14159265f / 180.0f);
+    camera.target = chestWorld + glm::vec3(0.0f, 0.06f, 0.0f);
+    camera.eye = camera.target + glm::vec3(0.0f, 0.03f, distance);
+    return camera;
+}
+
+render::Frame galleryFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,
+                           const stimuli::HandshapeLibrary& library, std::uint32_t columns) {
+    render::Frame frame;
+    frame.columns = std::max(1u, columns);
+    frame.rows = static_cast<std::uint32_t>((library.shapes.size() + frame.columns - 1) / frame.columns);
+    // One viewpoint for every shape: straight at the palm of the presented right hand.
+    SignerPosture posture;
+    posture.rightWrist = rig.presentingTarget(hand::Side::Right);
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(avatar, rig.pose(posture), world);
+    const glm::mat4& palm = world[avatar.findNode("rightHand")];
+    const glm::vec3 center = glm::vec3(palm * glm::vec4(0.0f, 0.0f, 90.0f * 0.001f, 1.0f));
+    render::Camera camera;
+    camera.verticalFovDegrees = 28.0f;
+    camera.target = center;
+    camera.eye = center + glm::vec3(0.0f, 0.0f, 0.55f);
+    for (const stimuli::Handshape& shape : library.shapes) {
+        posture.rightHand = shape.controls;
+        render::View view;
+        view.scene = sceneHandle;
+        view.pose = rig.pose(posture);
+        view.camera = camera;
+        view.label = shape.name;
+        frame.views.push_back(std::move(view));
+    }
+    return frame;
+}
+
+render::Frame postureFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,
+                           const SignerPosture& posture, float aspect, PoseReport* report) {
+    render::View view;
+    view.scene = sceneHandle;
+    view.pose = rig.pose(posture, report);
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(avatar, view.pose, world);
+    const glm::vec3 left = world[avatar.findNode("leftUpperArm")][3], right = world[avatar.findNode("rightUpperArm")][3];
+    view.camera = waistUpCamera(0.5f * (left + right) - glm::vec3(0.0f, 0.13f, 0.0f), aspect);
+    render::Frame frame;
+    frame.views.push_back(std::move(view));
+    return frame;
+}
+
+std::filesystem::path defaultAvatarPath(const std::filesystem::path& scenesDir) {
+    return scenesDir / "avatar" / "signer.glb";
+}
+
+}  // namespace signstim::app

@@ -1,0 +1,33 @@
+#pragma once
+// Frames of the signer for the avatar commands and their golden tests: the handshape gallery
+// (one hand, close-up, same viewpoint for every shape) and a posed signer (waist-up camera).
+#include "app/signer_pose.hpp"
+#include "renderer/frame.hpp"
+#include "renderer/renderer.hpp"
+#include "stimuli/handshapes.hpp"
+
+#include <cstdint>
+#include <filesystem>
+
+namespace signstim::app {
+
+// Sign-language video practice: plain, medium background the dark top and the skin both
+// stand out against (linear RGB of sRGB ≈ (0.55, 0.62, 0.68)).
+inline constexpr glm::vec4 kSignerBackground{0.26f, 0.34f, 0.42f, 1.0f};
+
+// Waist-up view of a signer whose chest is at `chestWorld` (metres), for aspect w/h.
+render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect);
+
+// A grid of every handshape in `library` on the right hand, shown palm-forward beside the
+// shoulder, each labelled with its name. `sceneHandle` is the avatar's Renderer handle.
+render::Frame galleryFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,
+                           const stimuli::HandshapeLibrary& library, std::uint32_t columns);
+
+// The signer in one posture, waist-up.
+render::Frame postureFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,
+                           const SignerPosture& posture, float aspect, PoseReport* report = nullptr);
+
+// The default signer committed in scenes/ (scenes/avatar/signer.glb).
+std::filesystem::path defaultAvatarPath(const std::filesystem::path& scenesDir);
+
+}  // namespace signstim::app

@@ -1,0 +1,98 @@
+// The committed default signer is the output of `signstim avatar build`; golden images of the
+// handshape gallery and a posed signer, rendered with Vulkan validation on (any message
+// fails the test). Golden comparison: tests/renderer/vk_golden.hpp (exact, then tolerance;
+// SIGNSTIM_UPDATE_GOLDEN=1 rewrites tests/app/golden/*.png).
+#include "app/avatar_builder.hpp"
+#include "app/avatar_render.hpp"
+#include "app/signer_pose.hpp"
+#include "renderer/gltf_loader.hpp"
+#include "renderer/gltf_writer.hpp"
+#include "renderer/renderer.hpp"
+#include "stimuli/handshapes.hpp"
+#include "tests/renderer/vk_golden.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <string>
+
+using namespace signstim;
+
+namespace {
+
+const std::string kScenes = std::string(SIGNSTIM_SOURCE_DIR) + "/scenes";
+
+std::string readBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+render::RendererOptions options(std::uint32_t width, std::uint32_t height) {
+    render::RendererOptions o;
+    o.width = width;
+    o.height = height;
+    o.msaa = 4;
+    o.background = app::kSignerBackground;
+    o.validation = true;
+    return o;
+}
+
+void expectNoValidationMessages(const render::Renderer& renderer) {
+    for (const std::string& message : renderer.validationMessages()) ADD_FAILURE() << "validation: " << message;
+}
+
+}  // namespace
+
+TEST(AvatarFile, CommittedAvatarIsTheBuildersOutputByteForByte) {
+    const std::string committed = readBytes(kScenes + "/avatar/signer.glb");
+    ASSERT_FALSE(committed.empty()) << "scenes/avatar/signer.glb missing";
+    const std::string built = render::encodeGltf(app::buildDefaultAvatar(), true);
+    EXPECT_TRUE(built == committed)
+        << "scenes/avatar/signer.glb is stale: run `signstim avatar build --out scenes/avatar/signer.glb`";
+    EXPECT_LT(committed.size(), 2u * 1024u * 1024u);
+}
+
+TEST(AvatarFile, CommittedAvatarLoadsAndIsAcceptedAsASigner) {
+    const render::Scene scene = render::loadGltf(kScenes + "/avatar/signer.glb");
+    EXPECT_NO_THROW(app::SignerRig rig(scene));
+    for (const std::string& bone : app::requiredAvatarBones()) EXPECT_GE(scene.findNode(bone), 0) << bone;
+}
+
+TEST(AvatarGolden, HandshapeGallery) {
+    const render::Scene scene = render::loadGltf(kScenes + "/avatar/signer.glb");
+    const app::SignerRig rig(scene);
+    const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", rig.handModel());
+    const std::uint32_t columns = 7, cell = 64;
+    const auto rows = static_cast<std::uint32_t>((library.shapes.size() + columns - 1) / columns);
+    render::Renderer renderer(options(columns * cell, rows * cell));
+    const int handle = renderer.addScene(scene);
+    render::Image image;
+    renderer.render(app::galleryFrame(scene, rig, handle, library, columns), image);
+    expectNoValidationMessages(renderer);
+    const std::string problem = render::testing::compareWithGolden(image, "../../app/golden/handshape_gallery");
+    EXPECT_TRUE(problem.empty()) << problem;
+}
+
+TEST(AvatarGolden, PosedSigner) {
+    const render::Scene scene = render::loadGltf(kScenes + "/avatar/signer.glb");
+    const app::SignerRig rig(scene);
+    const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", rig.handModel());
+    app::SignerPosture posture;
+    posture.rightHand = library.at("A").controls;
+    posture.rightWrist = rig.presentingTarget(hand::Side::Right);
+    posture.leftHand = library.at("5").controls;
+    posture.leftWrist = hand::ArmTarget{app::bodyFromSigningSpace({-150.0f, -80.0f, 300.0f}),
+                                        rig.presentingTarget(hand::Side::Left).handRotation};
+    posture.gazeMm = app::bodyFromSigningSpace({300.0f, 0.0f, 500.0f});
+    render::Renderer renderer(options(256, 256));
+    const int handle = renderer.addScene(scene);
+    app::PoseReport report;
+    render::Image image;
+    renderer.render(app::postureFrame(scene, rig, handle, posture, 1.0f, &report), image);
+    expectNoValidationMessages(renderer);
+    EXPECT_TRUE(report.right.reachable);
+    EXPECT_TRUE(report.left.reachable);
+    const std::string problem = render::testing::compareWithGolden(image, "../../app/golden/posed_signer");
+    EXPECT_TRUE(problem.empty()) << problem;
+}
