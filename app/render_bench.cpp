@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace signstim::app {
@@ -93,15 +94,15 @@ double measurePipelined(render::Renderer& renderer, const render::Frame& frame,
     renderer.render(frame, warmup);
     const auto start = std::chrono::steady_clock::now();
     std::uint32_t submitted = 0, retrieved = 0;
+    render::Image image;  // reused when there is no sink (as the raw loop reuses its buffer)
     while (retrieved < frames) {
         while (submitted < frames && renderer.framesPending() < renderer.framesInFlight()) {
             renderer.submit(frame);
             ++submitted;
         }
-        render::Image image;
         renderer.retrieve(image);
         ++retrieved;
-        if (sink) sink->push(std::move(image));
+        if (sink) sink->push(std::exchange(image, render::Image{}));
     }
     if (sink) sink->finish();
     return frames / seconds(start);

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <set>
 
@@ -205,6 +206,62 @@ TEST_F(VulkanRendererTest, Rgba16ReadbackAgreesWithRgba8) {
     EXPECT_LE(maxDelta, 2);
     EXPECT_GT(lowBits.size(), 16u);  // real 16-bit precision, not 8-bit values widened
     EXPECT_EQ(wide[3], 65535);       // opaque background
+}
+
+TEST_F(VulkanRendererTest, BlendedMaterialMixesWithTheBackground) {
+    RendererOptions options = testOptions();
+    options.background = {0.0f, 0.0f, 0.0f, 1.0f};
+    Scene quad = procedural::texturedQuad();
+    quad.materials[0].baseColorTexture = -1;
+    quad.materials[0].baseColorFactor = {1.0f, 1.0f, 1.0f, 1.0f};
+    Renderer& renderer = make(options);
+    Image opaque = renderOne(renderer, quad);
+    quad.materials[0].alphaMode = AlphaMode::Blend;
+    quad.materials[0].baseColorFactor.a = 0.5f;
+    Image blended = renderOne(renderer, quad);
+    const std::uint8_t* full = pixel(opaque, kSize / 2, kSize / 2);
+    const std::uint8_t* half = pixel(blended, kSize / 2, kSize / 2);
+    ASSERT_GT(full[0], 100);
+    // Half coverage over black in linear light: about 0.5 linear, i.e. ~186/255 in sRGB of 1.0.
+    EXPECT_LT(half[0], full[0]);
+    EXPECT_GT(half[0], full[0] / 2);
+    EXPECT_EQ(pixel(blended, 0, 0)[0], pixel(opaque, 0, 0)[0]);  // background untouched
+}
+
+TEST_F(VulkanRendererTest, MaskedMaterialCutsOutBelowTheCutoff) {
+    RendererOptions options = testOptions();
+    options.background = {0.0f, 0.0f, 0.0f, 0.0f};
+    Scene quad = procedural::texturedQuad();
+    // Dark checker squares become fully transparent texels.
+    for (std::size_t i = 0; i < quad.images[0].rgba.size(); i += 4)
+        quad.images[0].rgba[i + 3] = quad.images[0].rgba[i] < 128 ? 0 : 255;
+    quad.textures[0].magFilter = quad.textures[0].minFilter = Filter::Nearest;
+    quad.materials[0].alphaMode = AlphaMode::Mask;
+    Image image = renderOne(make(options), quad);
+    std::size_t cut = 0, kept = 0;
+    // Inside the quad (its middle half), pixels are either background or opaque surface.
+    for (std::uint32_t y = kSize / 4; y < 3 * kSize / 4; ++y)
+        for (std::uint32_t x = kSize / 4; x < 3 * kSize / 4; ++x) {
+            const std::uint8_t alpha = pixel(image, x, y)[3];
+            cut += alpha == 0;
+            kept += alpha == 255;
+        }
+    const std::size_t total = std::size_t(kSize / 2) * (kSize / 2);
+    EXPECT_EQ(cut + kept, total);
+    EXPECT_GT(cut, total / 3);
+    EXPECT_GT(kept, total / 3);
+}
+
+TEST_F(VulkanRendererTest, EnvironmentVariableTurnsValidationOn) {
+    RendererOptions options = testOptions();
+    options.validation = false;
+    ::setenv("SIGNSTIM_VALIDATION", "1", 1);
+    renderers_.push_back(std::make_unique<Renderer>(options));
+    ::unsetenv("SIGNSTIM_VALIDATION");
+    EXPECT_TRUE(renderers_.back()->validationEnabled());
+    options.validation = false;
+    Renderer plain(options);
+    EXPECT_FALSE(plain.validationEnabled());
 }
 
 TEST_F(VulkanRendererTest, PipelinedFramesComeBackInOrderAndMatchSynchronousOnes) {
