@@ -1,7 +1,254 @@
+// `signstim demo`: the main job until the study composer exists — the most complete
+// demonstration the project can render: the handshape gallery, and every indicating verb in
+// its four versions side by side (SPEC §4.3 layout), with a manifest listing every file.
+#include "app/avatar_render.hpp"
 #include "app/commands.hpp"
+#include "app/signer_pose.hpp"
+#include "app/verb_render.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "common/sha256.hpp"
+#include "renderer/frame_sink.hpp"
+#include "renderer/gltf_loader.hpp"
+#include "renderer/image_io.hpp"
+#include "renderer/renderer.hpp"
+#include "stimuli/handshapes.hpp"
+#include "stimuli/scenes_path.hpp"
+#include "stimuli/signing_space.hpp"
+#include "stimuli/verb_models.hpp"
+#include "stimuli/verb_synthesis.hpp"
+#include "stimuli/verbs.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
 
 namespace signstim::app {
+namespace {
 
-void registerDemoCommand(Commands&) {}
+namespace fs = std::filesystem;
+
+struct DemoOptions {
+    std::string out = "out";
+    std::string scenesDir;
+    std::string panelSize = "480x360";
+    std::string fps = "30";  // "30", "25", "30000/1001"
+    std::uint32_t msaa = 4;
+    std::string device;
+    double subject = 0.9;   // SPEC §4.3: the paper's phase-2 example arrangement
+    double object = -0.6;
+    std::vector<std::string> verbs;  // empty: all
+    bool quiet = false;
+};
+
+const std::vector<stimuli::VerbVersion> kVersions = {stimuli::VerbVersion::Point, stimuli::VerbVersion::Vector,
+                                                     stimuli::VerbVersion::Animator,
+                                                     stimuli::VerbVersion::Uninflected};
+
+void parsePanelSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
+    unsigned w = 0, h = 0;
+    char x = 0;
+    std::istringstream in(text);
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w < 64 || h < 64 || w > 4096 || h > 4096 ||
+        w % 2 || h % 2)
+        throw InputError("<command line>", 0, "--panel-size",
+                         "expected even WxH between 64 and 4096 (e.g. 480x360), got '" + text + "'");
+    width = w;
+    height = h;
+}
+
+// "0.9" / "-0.6": positions as written in file names (SPEC §5 key-value names).
+std::string positionText(double p) {
+    std::ostringstream s;
+    s << p;
+    return s.str();
+}
+
+// Forwards every frame and keeps a copy of frame `keep` (0-based) as a still.
+class StillCapturingSink : public render::FrameSink {
+public:
+    StillCapturingSink(render::FrameSink& next, std::uint64_t keep) : next_(next), keep_(keep) {}
+    void push(render::Image&& frame) override {
+        if (count_++ == keep_) still_ = frame;
+        next_.push(std::move(frame));
+    }
+    void finish() override { next_.finish(); }
+    std::uint64_t framesPushed() const override { return count_; }
+    const render::Image& still() const { return still_; }
+
+private:
+    render::FrameSink& next_;
+    std::uint64_t keep_;
+    std::uint64_t count_ = 0;
+    render::Image still_;
+};
+
+nlohmann::json fileEntry(const fs::path& root, const fs::path& file, const std::string& shows,
+                         std::uint32_t width, std::uint32_t height, std::uint64_t frames, double fps) {
+    nlohmann::json entry;
+    entry["path"] = fs::relative(file, root).generic_string();
+    entry["sha256"] = sha256File(file);
+    entry["width"] = width;
+    entry["height"] = height;
+    entry["frames"] = frames;
+    if (frames > 1) entry["fps"] = fps;
+    entry["shows"] = shows;
+    return entry;
+}
+
+void runDemo(const DemoOptions& o) {
+    std::uint32_t panelWidth = 0, panelHeight = 0;
+    parsePanelSize(o.panelSize, panelWidth, panelHeight);
+    stimuli::checkArcPosition(o.subject, "<command line>", "--subject");
+    stimuli::checkArcPosition(o.object, "<command line>", "--object");
+    const render::FrameRate frameRate = render::parseFrameRate(o.fps);
+    const double fps = frameRate.value();
+
+    // Inputs first, so that a data problem is reported before anything is rendered or written.
+    const fs::path scenes = stimuli::resolveScenesDir(o.scenesDir);
+    const render::Scene avatar = render::loadGltf(defaultAvatarPath(scenes));
+    const SignerRig rig(avatar);
+    const stimuli::HandshapeLibrary shapes = stimuli::loadHandshapes(scenes / "handshapes.json", rig.handModel());
+    const stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(scenes / "verbs.json");
+    const stimuli::TrainedVerbModels models = stimuli::loadVerbModels(scenes / "models" / "verb_models.json", verbs);
+    const stimuli::VerbSources sources{&verbs, &models, scenes / "animator"};
+
+    std::vector<const stimuli::VerbDefinition*> chosen;
+    if (o.verbs.empty())
+        for (const auto& v : verbs.verbs) chosen.push_back(&v);
+    else
+        for (const auto& name : o.verbs) chosen.push_back(&verbs.get(name, "<command line>", 0, "--verbs"));
+
+    // Every clip is synthesized before rendering starts (missing animator files fail fast).
+    std::vector<std::vector<VerbClip>> clips;
+    for (const stimuli::VerbDefinition* verb : chosen) {
+        std::vector<VerbClip> versions;
+        for (stimuli::VerbVersion version : kVersions)
+            versions.emplace_back(rig, shapes,
+                                  stimuli::synthesizeVerb(sources, verb->name, version, o.subject, o.object));
+        clips.push_back(std::move(versions));
+    }
+
+    const fs::path root(o.out);
+    ensureWritableDirectory(root);
+    ensureWritableDirectory(root / "verbs");
+    nlohmann::json files = nlohmann::json::array();
+
+    // 1. The handshape gallery.
+    {
+        const std::uint32_t columns = 7, cell = 160;
+        const std::uint32_t rows = static_cast<std::uint32_t>((shapes.shapes.size() + columns - 1) / columns);
+        render::RendererOptions options;
+        options.width = columns * cell;
+        options.height = rows * cell;
+        options.device = o.device;
+        options.msaa = o.msaa;
+        options.background = kSignerBackground;
+        render::Renderer renderer(options);
+        const int handle = renderer.addScene(avatar);
+        render::Image image;
+        renderer.render(galleryFrame(avatar, rig, handle, shapes, columns), image);
+        const fs::path file = root / "handshapes.png";
+        render::writeImage(image, file);
+        files.push_back(fileEntry(root, file, "every handshape of scenes/handshapes.json on the right hand",
+                                  image.width, image.height, 1, 0.0));
+        if (!o.quiet) std::fprintf(stderr, "signstim: %s\n", file.string().c_str());
+    }
+
+    // 2. Each verb: the four versions side by side, in sync (2x2 panels A-D).
+    render::RendererOptions options;
+    options.width = 2 * panelWidth;
+    options.height = 2 * panelHeight;
+    options.device = o.device;
+    options.msaa = o.msaa;
+    options.background = kSignerBackground;
+    render::Renderer renderer(options);
+    const int handle = renderer.addScene(avatar);
+    ClipRenderOptions clipOptions;
+    clipOptions.framesPerSecond = fps;
+    clipOptions.columns = 2;
+    clipOptions.rows = 2;
+    std::vector<std::string> labels;
+    const char* letters[] = {"A", "B", "C", "D"};
+    for (std::size_t i = 0; i < kVersions.size(); ++i)
+        labels.push_back(std::string(letters[i]) + " " + stimuli::toString(kVersions[i]));
+
+    const bool interactive = ::isatty(STDERR_FILENO) != 0;
+    render::VideoOptions video;
+    video.frameRate = frameRate;
+    for (std::size_t v = 0; v < chosen.size(); ++v) {
+        const stimuli::VerbDefinition& verb = *chosen[v];
+        std::string stem = "verb-" + verb.name;
+        if (!verb.objectOnly()) stem += "_subject-" + positionText(o.subject);
+        stem += "_object-" + positionText(o.object) + "_panels-PVAU";
+        const fs::path movie = root / "verbs" / (stem + ".mp4");
+        const fs::path still = root / "verbs" / (stem + ".png");
+
+        std::vector<const VerbClip*> views;
+        for (const VerbClip& clip : clips[v]) views.push_back(&clip);
+        const double middle = ClipTiming{}.leadInSeconds + 0.5 * clips[v].front().performance().durationSeconds;
+        auto videoSink = render::makeVideoSink(movie, video);
+        StillCapturingSink sink(*videoSink, static_cast<std::uint64_t>(middle * fps));
+        const std::uint64_t frames = renderClips(
+            renderer, handle, avatar, rig, views, labels, clipOptions, sink,
+            [&](std::uint64_t done, std::uint64_t total) {
+                // A live counter on a terminal; one line per verb in logs.
+                if (o.quiet || (!interactive && done != total)) return;
+                std::fprintf(stderr, "%ssignstim: [%zu/%zu] %s: frame %llu/%llu", interactive ? "\r" : "", v + 1,
+                             chosen.size(), verb.name.c_str(), static_cast<unsigned long long>(done),
+                             static_cast<unsigned long long>(total));
+            });
+        sink.finish();
+        render::writeImage(sink.still(), still);
+        if (!o.quiet) std::fprintf(stderr, "\n");
+        const std::string shows = verb.name + " (" + verb.movement + ") in the four versions, in sync: A point, B "
+                                  "vector, C animator, D uninflected; " +
+                                  (verb.objectOnly() ? "" : "subject " + positionText(o.subject) + ", ") +
+                                  "object " + positionText(o.object);
+        files.push_back(fileEntry(root, movie, shows, options.width, options.height, frames, fps));
+        files.push_back(fileEntry(root, still, "middle frame of " + movie.filename().string(), options.width,
+                                  options.height, 1, 0.0));
+    }
+
+    nlohmann::json manifest;
+    manifest["tool"] = "signstim";
+    manifest["version"] = SIGNSTIM_VERSION;
+    manifest["job"] = "demo";
+    manifest["device"] = renderer.device().name;
+    manifest["note"] = "Point and vector versions come from models trained on the synthetic reference corpus "
+                       "(scenes/corpus/reference_corpus.csv), not on motion capture.";
+    manifest["files"] = files;
+    writeFileAtomic(root / "manifest.json", manifest.dump(2) + "\n");
+}
+
+}  // namespace
+
+void registerDemoCommand(Commands& commands) {
+    auto o = std::make_shared<DemoOptions>();
+    CLI::App* demo = commands.root.add_subcommand(
+        "demo",
+        "Render the demonstration set: the handshape gallery and every verb in its four versions (point, "
+        "vector, animator, uninflected) side by side, with a manifest (the main job of ./run.sh)");
+    demo->add_option("--out", o->out, "Output directory (created if missing)")->capture_default_str();
+    demo->add_option("--scenes", o->scenesDir, "Data directory (default: $SIGNSTIM_SCENES, else scenes/ beside signstim)");
+    demo->add_option("--panel-size", o->panelSize, "Size of one of the four panels, WxH (even)")->capture_default_str();
+    demo->add_option("--fps", o->fps, "Frame rate: 30, 25, 30000/1001 ...")->capture_default_str();
+    demo->add_option("--msaa", o->msaa, "Multisampling: 1 or 4")->capture_default_str();
+    demo->add_option("--device", o->device, "Vulkan device: name substring or index (see `signstim devices`)");
+    demo->add_option("--subject", o->subject, "Arc position of the subject, in [-1, 1]")->capture_default_str();
+    demo->add_option("--object", o->object, "Arc position of the object, in [-1, 1]")->capture_default_str();
+    demo->add_option("--verbs", o->verbs, "Only these verbs (e.g. --verbs ASK,GIVE)")->delimiter(',');
+    demo->add_flag("--quiet", o->quiet, "No progress on stderr");
+    demo->callback([o] {
+        runDemo(*o);
+        std::printf("signstim: demo written to %s/ (manifest.json lists every file)\n", o->out.c_str());
+    });
+}
 
 }  // namespace signstim::app

@@ -90,6 +90,12 @@ glm::quat bodyFromSigningSpace(const glm::quat& rotation) {
     return glm::normalize(glm::quat_cast(s * glm::mat3_cast(rotation) * s));
 }
 
+glm::quat handFrameFromSigningSpace(const glm::quat& orientation) {
+    const glm::mat3 s(glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1));
+    const glm::mat3 flipY(glm::vec3(1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, 1));
+    return glm::normalize(glm::quat_cast(s * glm::mat3_cast(orientation) * flipY));
+}
+
 SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, const hand::HandModel& handModel)
     : scene_(&scene), handModel_(handModel) {
     const auto lookup = [&](const std::string& vrm) {

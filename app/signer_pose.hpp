@@ -43,6 +43,16 @@ const std::vector<std::string>& requiredSignerBones();
 glm::vec3 bodyFromSigningSpace(const glm::vec3& pointMm);
 glm::quat bodyFromSigningSpace(const glm::quat& rotation);
 
+// The orientation of a hand's palm frame written in signing-space coordinates (the verb
+// files, corpus and models: columns palmar x, y = z × x computed in those coordinates,
+// fingers z) -> the palm frame in the body frame. The signing-space frame is physically
+// left-handed (right, up, forward) while the body frame is right-handed, so the cross
+// product that made y points the other way in the body frame: the result keeps the palm
+// (x) and finger (z) directions and recomputes y: S·R·diag(1, −1, 1). (Conjugation S·R·S,
+// right for a rotation *operator* such as `pose --right-rotation`, would turn the palm to
+// face the opposite way.)
+glm::quat handFrameFromSigningSpace(const glm::quat& orientation);
+
 struct SignerPosture {
     hand::HandControls rightHand, leftHand;
     // Body frame. Absent: the hand rests in front of the waist (restingTarget()).

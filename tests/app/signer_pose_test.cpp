@@ -78,6 +78,20 @@ TEST(SignerPose, SigningSpaceIsTheMirrorOfTheBodyFrame) {
     EXPECT_LT(hand::rotationAngleDeg(app::bodyFromSigningSpace(yaw), glm::angleAxis(-0.5f, glm::vec3(0, 1, 0))), 1e-3f);
 }
 
+TEST(SignerPose, HandFrameFromSigningSpaceKeepsPalmAndFingerDirections) {
+    // Verb data give a palm frame by its palm (x) and finger (z) directions in signing-space
+    // coordinates, with y = z × x computed there. The body-frame palm frame must point the
+    // palm and fingers the same physical ways (x -> -x) and be a proper rotation.
+    const glm::vec3 fingers = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
+    const glm::vec3 palm = glm::normalize(glm::cross(glm::vec3(0.0f, 0.0f, 1.0f), fingers));
+    const glm::quat signing = glm::quat_cast(glm::mat3(palm, glm::cross(fingers, palm), fingers));
+    const glm::mat3 body = glm::mat3_cast(app::handFrameFromSigningSpace(signing));
+    const auto mirror = [](glm::vec3 v) { return glm::vec3(-v.x, v.y, v.z); };
+    EXPECT_LT(glm::distance(body[0], mirror(palm)), 1e-5f);
+    EXPECT_LT(glm::distance(body[2], mirror(fingers)), 1e-5f);
+    EXPECT_NEAR(glm::determinant(body), 1.0f, 1e-5f);
+}
+
 TEST(SignerPose, IncompleteSkeletonIsRefusedListingEveryMissingBone) {
     render::Scene s = avatar();
     s.sourceName = "my_avatar.glb";

@@ -1,0 +1,130 @@
+#include "app/verb_render.hpp"
+
+#include "app/avatar_render.hpp"
+#include "common/error.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace signstim::app {
+namespace {
+
+double smoothstep(double u) {
+    u = std::clamp(u, 0.0, 1.0);
+    return u * u * (3.0 - 2.0 * u);
+}
+
+hand::Side toHandSide(stimuli::HandSide side) {
+    return side == stimuli::HandSide::Right ? hand::Side::Right : hand::Side::Left;
+}
+
+hand::ArmTarget blendTargets(const hand::ArmTarget& a, const hand::ArmTarget& b, float t) {
+    hand::ArmTarget out;
+    out.wristMm = a.wristMm + t * (b.wristMm - a.wristMm);
+    out.handRotation = glm::slerp(a.handRotation, glm::dot(a.handRotation, b.handRotation) < 0.0f
+                                                      ? -b.handRotation
+                                                      : b.handRotation,
+                                  t);
+    return out;
+}
+
+}  // namespace
+
+hand::ArmTarget armTargetFromSigningSpace(const stimuli::HandPose& pose) {
+    hand::ArmTarget target;
+    target.wristMm = bodyFromSigningSpace(glm::vec3(pose.positionMm));
+    target.handRotation = handFrameFromSigningSpace(glm::quat(pose.orientation));
+    return target;
+}
+
+VerbClip::VerbClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes,
+                   stimuli::VerbPerformance performance, ClipTiming timing)
+    : rig_(&rig), shapes_(&shapes), performance_(std::move(performance)), timing_(timing) {
+    for (const stimuli::HandTrack& track : performance_.hands)
+        for (const stimuli::PerformanceKeyframe& key : track.keyframes) shapes.at(key.handshape);
+}
+
+double VerbClip::durationSeconds() const {
+    return timing_.leadInSeconds + performance_.durationSeconds + timing_.holdSeconds;
+}
+
+SignerPosture VerbClip::postureAt(double seconds) const {
+    SignerPosture posture;
+    const double verbTime = seconds - timing_.leadInSeconds;
+    // Lead-in: rise from rest with an ease-in-out, reaching the first keyframe as the verb begins.
+    const float rise =
+        timing_.leadInSeconds > 0.0 ? static_cast<float>(smoothstep(seconds / timing_.leadInSeconds)) : 1.0f;
+    for (const stimuli::HandTrack& track : performance_.hands) {
+        const hand::Side side = toHandSide(track.side);
+        const stimuli::HandSample sample = stimuli::sampleHand(track, std::max(0.0, verbTime));
+        hand::HandControls controls =
+            hand::interpolate(shapes_->at(sample.handshapeFrom).controls, shapes_->at(sample.handshapeTo).controls,
+                              static_cast<float>(sample.handshapeBlend));
+        hand::ArmTarget target = armTargetFromSigningSpace(sample.pose);
+        if (rise < 1.0f) target = blendTargets(rig_->restingTarget(side), target, rise);
+        if (side == hand::Side::Right) {
+            posture.rightHand = controls;
+            posture.rightWrist = target;
+        } else {
+            posture.leftHand = controls;
+            posture.leftWrist = target;
+        }
+    }
+    return posture;
+}
+
+std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const render::Scene& avatar,
+                          const SignerRig& rig, const std::vector<const VerbClip*>& clips,
+                          const std::vector<std::string>& labels, const ClipRenderOptions& options,
+                          render::FrameSink& sink,
+                          const std::function<void(std::uint64_t, std::uint64_t)>& progress) {
+    if (clips.empty()) return 0;
+    double duration = 0.0;
+    for (const VerbClip* clip : clips) duration = std::max(duration, clip->durationSeconds());
+    const std::uint64_t total = static_cast<std::uint64_t>(std::floor(duration * options.framesPerSecond + 1e-9)) + 1;
+
+    // One fixed camera for every view and frame: waist-up on the rest pose.
+    const render::RendererOptions& ro = renderer.options();
+    const float aspect = (static_cast<float>(ro.width) / static_cast<float>(options.columns)) /
+                         (static_cast<float>(ro.height) / static_cast<float>(options.rows));
+    const render::Frame restFrame = postureFrame(avatar, rig, sceneHandle, SignerPosture{}, aspect);
+    const render::Camera camera = restFrame.views.front().camera;
+
+    std::vector<PoseReport> previous(clips.size());
+    std::vector<bool> hasPrevious(clips.size(), false);
+    const std::uint32_t inFlight = std::max(1u, renderer.framesInFlight());
+    std::uint64_t submitted = 0, retrieved = 0;
+    const auto retrieveOne = [&] {
+        render::Image image;
+        renderer.retrieve(image);
+        sink.push(std::move(image));
+        ++retrieved;
+        if (progress) progress(retrieved, total);
+    };
+    for (std::uint64_t f = 0; f < total; ++f) {
+        const double t = static_cast<double>(f) / options.framesPerSecond;
+        render::Frame frame;
+        frame.columns = options.columns;
+        frame.rows = options.rows;
+        for (std::size_t i = 0; i < clips.size(); ++i) {
+            PoseReport report;
+            render::View view;
+            view.scene = sceneHandle;
+            view.pose = rig.pose(clips[i]->postureAt(t), &report, hasPrevious[i] ? &previous[i] : nullptr);
+            view.camera = camera;
+            if (i < labels.size()) view.label = labels[i];
+            previous[i] = report;
+            hasPrevious[i] = true;
+            frame.views.push_back(std::move(view));
+        }
+        if (submitted - retrieved >= inFlight) retrieveOne();
+        renderer.submit(frame);
+        ++submitted;
+    }
+    while (retrieved < submitted) retrieveOne();
+    return total;
+}
+
+}  // namespace signstim::app
