@@ -1,0 +1,154 @@
+// `signstim train | verb | evaluate | reference-corpus` as a user runs them: the built binary,
+// its output, exit status and files.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kScenes = fs::path(SIGNSTIM_SOURCE_DIR) / "scenes";
+
+struct CommandResult {
+    int status = -1;
+    std::string output;  // stdout and stderr together
+};
+
+CommandResult run(const std::string& arguments) {
+    CommandResult r;
+    const std::string command = std::string(SIGNSTIM_EXE) + " " + arguments + " --scenes " + kScenes.string() + " 2>&1";
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (pipe == nullptr) return r;
+    std::array<char, 4096> buffer{};
+    std::size_t n = 0;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
+    const int status = ::pclose(pipe);
+    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+fs::path workDir() {
+    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "verb_cli_test";
+    fs::create_directories(dir);
+    return dir;
+}
+
+TEST(VerbCli, TrainOnTheShippedCorpusReproducesTheShippedModels) {
+    const fs::path out = workDir() / "models.json";
+    const CommandResult r = run("train " + (kScenes / "corpus" / "reference_corpus.csv").string() + " --out " + out.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(readFile(out), readFile(kScenes / "models" / "verb_models.json"));
+}
+
+TEST(VerbCli, ReferenceCorpusCommandRegeneratesTheShippedCorpus) {
+    const fs::path out = workDir() / "corpus.csv";
+    const CommandResult r = run("reference-corpus --out " + out.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(readFile(out), readFile(kScenes / "corpus" / "reference_corpus.csv"));
+}
+
+TEST(VerbCli, VerbJsonPrintsKeyframesPerHandForEveryVersion) {
+    for (const char* version : {"point", "vector", "animator", "uninflected"}) {
+        const CommandResult r = run(std::string("verb EMAIL --subject 0.9 --object -0.6 --version ") + version + " --json");
+        ASSERT_EQ(r.status, 0) << version << ": " << r.output;
+        const nlohmann::json j = nlohmann::json::parse(r.output);
+        EXPECT_EQ(j["verb"], "EMAIL");
+        EXPECT_EQ(j["version"], version);
+        for (const char* hand : {"right", "left"}) {
+            ASSERT_EQ(j["hands"][hand].size(), 2u) << version;
+            const auto& key = j["hands"][hand][1];
+            EXPECT_EQ(key["position"].size(), 3u);
+            EXPECT_EQ(key["orientation"].size(), 4u);
+            EXPECT_TRUE(key["handshape"].is_string());
+            EXPECT_GT(key["time"].get<double>(), 0.0);
+        }
+    }
+}
+
+TEST(VerbCli, PointJsonIsAStartingAnimatorFile) {
+    const fs::path scenes = workDir() / "scenes";
+    fs::create_directories(scenes / "animator");
+    fs::copy_file(kScenes / "verbs.json", scenes / "verbs.json", fs::copy_options::overwrite_existing);
+    const CommandResult point = run("verb GIVE --subject 0.3 --object -0.9 --version point --json");
+    ASSERT_EQ(point.status, 0) << point.output;
+    std::ofstream(scenes / "animator" / "GIVE_s0.3_o-0.9.json") << point.output;
+    const std::string command = std::string(SIGNSTIM_EXE) + " verb GIVE --subject 0.3 --object -0.9 --version animator --json --scenes " +
+                                scenes.string() + " 2>&1";
+    FILE* pipe = ::popen(command.c_str(), "r");
+    std::string output;
+    std::array<char, 4096> buffer{};
+    std::size_t n = 0;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), n);
+    ASSERT_EQ(WEXITSTATUS(::pclose(pipe)), 0) << output;
+    const nlohmann::json a = nlohmann::json::parse(point.output);
+    const nlohmann::json b = nlohmann::json::parse(output);
+    EXPECT_EQ(a["hands"], b["hands"]);
+}
+
+TEST(VerbCli, UserMistakesAreClearErrors) {
+    CommandResult r = run("verb ASK --subject 1.5 --object 0 --version point --json");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("--subject"), std::string::npos) << r.output;
+    r = run("verb ASK --subject 0 --object -1.01 --version point --json");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("--object"), std::string::npos) << r.output;
+    r = run("verb HUG --subject 0 --object 0.5 --version point");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("ASK, GIVE, MEET, SCOLD, TELL, COPY, EMAIL, SEND"), std::string::npos) << r.output;
+    r = run("verb ASK --subject 0.3 --object 0.6 --version animator --json");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("ASK_s0.3_o0.6.json"), std::string::npos) << r.output;
+    r = run("verb ASK --subject 0.9 --object -0.6 --version point --out clip.mp4");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("rendering verbs needs the avatar (not yet available)"), std::string::npos) << r.output;
+    r = run("verb ASK --object -0.6 --version point --json");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("--subject"), std::string::npos) << r.output;
+    // Object-only verbs ignore the subject.
+    EXPECT_EQ(run("verb TELL --object -0.6 --version point --json").output,
+              run("verb TELL --subject 0.9 --object -0.6 --version point --json").output);
+}
+
+TEST(VerbCli, MalformedCorpusRowsNameTheLine) {
+    const fs::path bad = workDir() / "bad.csv";
+    std::ofstream(bad) << "# test\nverb,example,subject,object,hand,keyframe,x,y,z,roll,pitch,yaw\n"
+                          "ASK,1,0.3,-0.6,right,0,1,2,3,0,0,0\nASK,1,0.3,-0.6,right,1,1,two,3,0,0,0\n";
+    const CommandResult r = run("train " + bad.string() + " --out " + (workDir() / "never.json").string());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("bad.csv:4: field 'y'"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(workDir() / "never.json"));
+}
+
+TEST(VerbCli, EvaluatePrintsErrorsPerVerbAndModelBesideTheBaselines) {
+    // One verb keeps the test quick: the TELL rows of the reference corpus.
+    std::istringstream corpus(readFile(kScenes / "corpus" / "reference_corpus.csv"));
+    std::string line, subset;
+    while (std::getline(corpus, line))
+        if (line.rfind("#", 0) == 0 || line.rfind("verb,", 0) == 0 || line.rfind("TELL,", 0) == 0) subset += line + "\n";
+    const fs::path file = workDir() / "tell.csv";
+    std::ofstream(file) << subset;
+    const CommandResult r = run("evaluate " + file.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const char* model : {"| TELL | point |", "| TELL | vector |", "| TELL | point-quadratic |", "| TELL | point-linear |",
+                              "| TELL | uninflected |"})
+        EXPECT_NE(r.output.find(model), std::string::npos) << r.output;
+}
+
+}  // namespace
