@@ -131,12 +131,16 @@ const std::uint8_t* glyphColumns(char c) {
 }
 
 std::uint32_t labelScale(std::uint32_t cellHeight) {
-    return std::max<std::uint32_t>(1, (cellHeight + 95) / 96);
+    return std::clamp<std::uint32_t>((cellHeight + 95) / 96, 1, 3);
 }
 
 void drawLabel(Image& image, const LabelRect& cell, const std::string& text) {
     if (text.empty() || image.width == 0) return;
-    const std::uint32_t scale = labelScale(cell.height);
+    // Shrink long captions until they fit the cell (down to 1x, then they are clipped).
+    std::uint32_t scale = labelScale(cell.height);
+    while (scale > 1 && static_cast<std::uint32_t>(text.size()) * kAdvance * scale + 8 * scale >
+                            cell.width)
+        --scale;
     const std::uint32_t margin = 2 * scale, padding = 2 * scale;
     const std::uint32_t boxWidth =
         static_cast<std::uint32_t>(text.size()) * kAdvance * scale - scale + 2 * padding;

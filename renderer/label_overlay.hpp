@@ -14,7 +14,8 @@ struct LabelRect {
     std::uint32_t x = 0, y = 0, width = 0, height = 0;  // the view's cell in the image
 };
 
-// Integer glyph scale for a cell of `cellHeight` pixels (2 at 128 px, 5 at 480 px).
+// Integer glyph scale for a cell of `cellHeight` pixels (2 at 128 px, 3 from 193 px up);
+// drawLabel lowers it further when the caption would not fit the cell's width.
 std::uint32_t labelScale(std::uint32_t cellHeight);
 
 // Draws `text` into `image` inside `cell` (clipped to the cell).
