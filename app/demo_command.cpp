@@ -9,7 +9,6 @@
 #include "common/error.hpp"
 #include "common/sha256.hpp"
 #include "renderer/frame_sink.hpp"
-#include "renderer/gltf_loader.hpp"
 #include "renderer/image_io.hpp"
 #include "renderer/renderer.hpp"
 #include "stimuli/handshapes.hpp"
@@ -70,25 +69,6 @@ std::string positionText(double p) {
     return s.str();
 }
 
-// Forwards every frame and keeps a copy of frame `keep` (0-based) as a still.
-class StillCapturingSink : public render::FrameSink {
-public:
-    StillCapturingSink(render::FrameSink& next, std::uint64_t keep) : next_(next), keep_(keep) {}
-    void push(render::Image&& frame) override {
-        if (count_++ == keep_) still_ = frame;
-        next_.push(std::move(frame));
-    }
-    void finish() override { next_.finish(); }
-    std::uint64_t framesPushed() const override { return count_; }
-    const render::Image& still() const { return still_; }
-
-private:
-    render::FrameSink& next_;
-    std::uint64_t keep_;
-    std::uint64_t count_ = 0;
-    render::Image still_;
-};
-
 nlohmann::json fileEntry(const fs::path& root, const fs::path& file, const std::string& shows,
                          std::uint32_t width, std::uint32_t height, std::uint64_t frames, double fps) {
     nlohmann::json entry;
@@ -112,9 +92,10 @@ void runDemo(const DemoOptions& o) {
 
     // Inputs first, so that a data problem is reported before anything is rendered or written.
     const fs::path scenes = stimuli::resolveScenesDir(o.scenesDir);
-    const render::Scene avatar = render::loadGltf(defaultAvatarPath(scenes));
-    const SignerRig rig(avatar);
-    const stimuli::HandshapeLibrary shapes = stimuli::loadHandshapes(scenes / "handshapes.json", rig.handModel());
+    const Signer signer(scenes);
+    const render::Scene& avatar = signer.avatar();
+    const SignerRig& rig = signer.rig();
+    const stimuli::HandshapeLibrary& shapes = signer.shapes();
     const stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(scenes / "verbs.json");
     const stimuli::TrainedVerbModels models = stimuli::loadVerbModels(scenes / "models" / "verb_models.json", verbs);
     const stimuli::VerbSources sources{&verbs, &models, scenes / "animator"};
@@ -144,13 +125,7 @@ void runDemo(const DemoOptions& o) {
     {
         const std::uint32_t columns = 7, cell = 160;
         const std::uint32_t rows = static_cast<std::uint32_t>((shapes.shapes.size() + columns - 1) / columns);
-        render::RendererOptions options;
-        options.width = columns * cell;
-        options.height = rows * cell;
-        options.device = o.device;
-        options.msaa = o.msaa;
-        options.background = kSignerBackground;
-        render::Renderer renderer(options);
+        render::Renderer renderer(signerRendererOptions(columns * cell, rows * cell, o.msaa, o.device));
         const int handle = renderer.addScene(avatar);
         render::Image image;
         renderer.render(galleryFrame(avatar, rig, handle, shapes, columns), image);
@@ -162,12 +137,7 @@ void runDemo(const DemoOptions& o) {
     }
 
     // 2. Each verb: the four versions side by side, in sync (2x2 panels A-D).
-    render::RendererOptions options;
-    options.width = 2 * panelWidth;
-    options.height = 2 * panelHeight;
-    options.device = o.device;
-    options.msaa = o.msaa;
-    options.background = kSignerBackground;
+    const render::RendererOptions options = signerRendererOptions(2 * panelWidth, 2 * panelHeight, o.msaa, o.device);
     render::Renderer renderer(options);
     const int handle = renderer.addScene(avatar);
     ClipRenderOptions clipOptions;

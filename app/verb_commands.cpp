@@ -1,8 +1,12 @@
 // `signstim train`, `signstim verb`, `signstim evaluate`, `signstim reference-corpus`:
 // the indicating verbs of SPEC §3 (Huenerfauth, Lu & Kacorri 2015).
 #include "app/commands.hpp"
+#include "app/verb_render.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "renderer/frame_sink.hpp"
+#include "renderer/image_io.hpp"
+#include "renderer/renderer.hpp"
 #include "stimuli/corpus.hpp"
 #include "stimuli/evaluation.hpp"
 #include "stimuli/reference_performer.hpp"
@@ -15,6 +19,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <sstream>
 #include <string>
 
 namespace signstim::app {
@@ -35,6 +40,13 @@ struct VerbOptions {
     double object = 0.0;
     bool json = false;
     int degree = 3;
+    // Rendering (verb --out).
+    std::string size = "640x480";
+    std::string fps = "30";
+    std::uint32_t msaa = 4;
+    std::string device;
+    std::string avatarFile;
+    bool quiet = false;
 };
 
 std::filesystem::path scenes(const VerbOptions& o) { return resolveScenesDir(o.scenesDir); }
@@ -63,6 +75,50 @@ void printSummary(const VerbPerformance& p) {
         }
     }
     std::printf("(--json prints the keyframes as JSON, the animator file format)\n");
+}
+
+void parseImageSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
+    unsigned w = 0, h = 0;
+    char x = 0;
+    std::istringstream in(text);
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w < 16 || h < 16 || w > 8192 || h > 8192)
+        throw InputError("<command line>", 0, "--size", "expected WxH between 16 and 8192, got '" + text + "'");
+    width = w;
+    height = h;
+}
+
+// verb --out: the signer performs the verb (lead-in from rest, the verb, a hold).
+void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, const VerbPerformance& performance) {
+    std::uint32_t width = 0, height = 0;
+    parseImageSize(o.size, width, height);
+    const render::FrameRate frameRate = render::parseFrameRate(o.fps);
+    const std::filesystem::path out(o.outPath);
+    const Signer signer(scenesDir, o.avatarFile);
+    const VerbClip clip(signer.rig(), signer.shapes(), performance);
+    ensureWritableDirectory(out.has_extension() ? out.parent_path() : out);
+
+    render::Renderer renderer(signerRendererOptions(width, height, o.msaa, o.device));
+    const int handle = renderer.addScene(signer.avatar());
+    ClipRenderOptions options;
+    options.framesPerSecond = frameRate.value();
+    render::VideoOptions video;
+    video.frameRate = frameRate;
+    const bool still = out.extension() == ".png";
+    std::unique_ptr<render::FrameSink> target = still ? render::makeDiscardSink() : render::makeFrameSink(out, {}, video);
+    const double middle = ClipTiming{}.leadInSeconds + 0.5 * performance.durationSeconds;
+    StillCapturingSink sink(*target, static_cast<std::uint64_t>(middle * options.framesPerSecond));
+    const std::uint64_t frames =
+        renderClips(renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink,
+                    [&](std::uint64_t done, std::uint64_t total) {
+                        if (!o.quiet && (done == total || done % 10 == 0))
+                            std::fprintf(stderr, "signstim: frame %llu/%llu\n", static_cast<unsigned long long>(done),
+                                         static_cast<unsigned long long>(total));
+                    });
+    sink.finish();
+    if (still) render::writeImage(sink.still(), out);
+    std::printf("%s: %s %s, %llu frame%s\n", out.string().c_str(), performance.verb.c_str(),
+                toString(performance.version).c_str(), static_cast<unsigned long long>(still ? 1 : frames),
+                still || frames == 1 ? "" : "s");
 }
 
 }  // namespace
@@ -109,7 +165,15 @@ void registerVerbCommands(Commands& commands) {
         verb->add_option("--object", o->object, "Object's arc position")->required();
         verb->add_option("--version", o->version, "point | vector | animator | uninflected")->required();
         auto* jsonFlag = verb->add_flag("--json", o->json, "Print the keyframes (per hand: time, position, orientation, handshape) as JSON");
-        verb->add_option("--out", o->outPath, "Render to FILE.mp4 or a frame DIR (needs the avatar)")->excludes(jsonFlag);
+        verb->add_option("--out", o->outPath,
+                         "Render the signer: FILE.mp4 (video), FILE.png (the middle frame) or DIR (frame_00001.png ...)")
+            ->excludes(jsonFlag);
+        verb->add_option("--size", o->size, "Rendered image size WxH (even for .mp4)")->capture_default_str();
+        verb->add_option("--fps", o->fps, "Frame rate: 30, 25, 30000/1001 ...")->capture_default_str();
+        verb->add_option("--msaa", o->msaa, "Multisampling: 1 or 4")->capture_default_str();
+        verb->add_option("--device", o->device, "Vulkan device: name substring or index (see `signstim devices`)");
+        verb->add_option("--avatar", o->avatarFile, "Your own avatar (.glb/.gltf with VRM humanoid bone names)");
+        verb->add_flag("--quiet", o->quiet, "No progress on stderr");
         verb->add_option("--models", o->modelsFile, "Trained models (default: SCENES/models/verb_models.json)");
         addCommonOptions(verb, o);
         verb->callback([o, verb] {
@@ -126,9 +190,6 @@ void registerVerbCommands(Commands& commands) {
                                      definition.name + " inflects for its subject too: give --subject S in [-1, 1]");
                 checkArcPosition(o->subject, "<command line>", "--subject");
             }
-            if (!o->outPath.empty())
-                throw InputError("<command line>", 0, "--out",
-                                 "rendering verbs needs the avatar (not yet available); use --json for the keyframes");
             const std::filesystem::path scenesDir = scenes(*o);
             TrainedVerbModels models;
             if (*version == VerbVersion::Point || *version == VerbVersion::Vector)
@@ -137,7 +198,8 @@ void registerVerbCommands(Commands& commands) {
                                         verbs);
             const VerbSources sources{&verbs, &models, scenesDir / "animator"};
             const VerbPerformance performance = synthesizeVerb(sources, definition.name, *version, o->subject, o->object);
-            if (o->json) std::fputs(formatPerformanceJson(performance).c_str(), stdout);
+            if (!o->outPath.empty()) renderVerb(*o, scenesDir, performance);
+            else if (o->json) std::fputs(formatPerformanceJson(performance).c_str(), stdout);
             else printSummary(performance);
         });
     }

@@ -2,6 +2,7 @@
 
 #include "app/avatar_render.hpp"
 #include "common/error.hpp"
+#include "renderer/gltf_loader.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -20,6 +21,22 @@ hand::Side toHandSide(stimuli::HandSide side) {
     return side == stimuli::HandSide::Right ? hand::Side::Right : hand::Side::Left;
 }
 
+// [D] A hand that takes no part in the verb hangs relaxed: fingers gently curled, more so
+// toward the little finger, thumb resting beside the index (not the flat bind pose).
+hand::HandControls relaxedHand() {
+    hand::HandControls controls;
+    const float bend[] = {0.12f, 0.16f, 0.2f, 0.24f}, hook[] = {0.2f, 0.25f, 0.3f, 0.35f};
+    for (int i = 0; i < 4; ++i) {
+        controls.fingers[i].bend = bend[i];
+        controls.fingers[i].hook = hook[i];
+    }
+    controls.thumb.bendDeg = 15.0f;
+    controls.thumb.spreadDeg = 25.0f;
+    controls.thumb.mcpDeg = 10.0f;
+    controls.thumb.ipDeg = 10.0f;
+    return controls;
+}
+
 hand::ArmTarget blendTargets(const hand::ArmTarget& a, const hand::ArmTarget& b, float t) {
     hand::ArmTarget out;
     out.wristMm = a.wristMm + t * (b.wristMm - a.wristMm);
@@ -31,6 +48,27 @@ hand::ArmTarget blendTargets(const hand::ArmTarget& a, const hand::ArmTarget& b,
 }
 
 }  // namespace
+
+Signer::Signer(const std::filesystem::path& scenesDir, const std::filesystem::path& avatarFile)
+    : avatar_(render::loadGltf(avatarFile.empty() ? defaultAvatarPath(scenesDir) : avatarFile)),
+      rig_(avatar_),
+      shapes_(stimuli::loadHandshapes(scenesDir / "handshapes.json", rig_.handModel())) {}
+
+render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
+                                              const std::string& device) {
+    render::RendererOptions options;
+    options.width = width;
+    options.height = height;
+    options.msaa = msaa;
+    options.device = device;
+    options.background = kSignerBackground;
+    return options;
+}
+
+void StillCapturingSink::push(render::Image&& frame) {
+    if (count_++ == keep_) still_ = frame;
+    next_.push(std::move(frame));
+}
 
 hand::ArmTarget armTargetFromSigningSpace(const stimuli::HandPose& pose) {
     hand::ArmTarget target;
@@ -52,6 +90,7 @@ double VerbClip::durationSeconds() const {
 
 SignerPosture VerbClip::postureAt(double seconds) const {
     SignerPosture posture;
+    posture.rightHand = posture.leftHand = relaxedHand();
     const double verbTime = seconds - timing_.leadInSeconds;
     // Lead-in: rise from rest with an ease-in-out, reaching the first keyframe as the verb begins.
     const float rise =

@@ -13,11 +13,52 @@
 #include "stimuli/handshapes.hpp"
 #include "stimuli/verb_synthesis.hpp"
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace signstim::app {
+
+// The default signer (or a user's avatar) with its rig and the handshape library, loaded
+// once. Not copyable: the rig refers to the avatar scene.
+class Signer {
+public:
+    // scenes/avatar/signer.glb unless `avatarFile` is given; scenes/handshapes.json.
+    // Throws InputError naming the file for any problem.
+    explicit Signer(const std::filesystem::path& scenesDir, const std::filesystem::path& avatarFile = {});
+    Signer(const Signer&) = delete;
+    Signer& operator=(const Signer&) = delete;
+
+    const render::Scene& avatar() const { return avatar_; }
+    const SignerRig& rig() const { return rig_; }
+    const stimuli::HandshapeLibrary& shapes() const { return shapes_; }
+
+private:
+    render::Scene avatar_;
+    SignerRig rig_;
+    stimuli::HandshapeLibrary shapes_;
+};
+
+// Renderer options for the signer: sign-language video practice background.
+render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
+                                              const std::string& device);
+
+// Forwards every frame to `next` and keeps a copy of frame `keep` (0-based): the still of a clip.
+class StillCapturingSink : public render::FrameSink {
+public:
+    StillCapturingSink(render::FrameSink& next, std::uint64_t keep) : next_(next), keep_(keep) {}
+    void push(render::Image&& frame) override;
+    void finish() override { next_.finish(); }
+    std::uint64_t framesPushed() const override { return count_; }
+    const render::Image& still() const { return still_; }
+
+private:
+    render::FrameSink& next_;
+    std::uint64_t keep_;
+    std::uint64_t count_ = 0;
+    render::Image still_;
+};
 
 struct ClipTiming {
     double leadInSeconds = 0.5;  // rest -> first keyframe
