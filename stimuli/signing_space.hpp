@@ -8,7 +8,12 @@
 //   +y      up,
 //   +z      forward, away from the signer (toward the viewer),
 //   units   millimetres.
-// It is right-handed (x × y = z). The avatar maps this frame onto its skeleton (chest bone).
+// Physically this frame is left-handed (the signer's right × up points backward, not
+// forward): it is the mirror image of the avatar's right-handed body frame (+x the signer's
+// left). Coordinates are used as written; orientations are built from palm and finger
+// directions with y = z × x computed in these coordinates, and the app converts them to
+// the body frame keeping the palm and finger directions (app/signer_pose.hpp,
+// handFrameFromSigningSpace).
 #include <glm/vec3.hpp>
 #include <string>
 
