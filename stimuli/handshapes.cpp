@@ -1,10 +1,11 @@
 #include "stimuli/handshapes.hpp"
 
 #include "common/error.hpp"
+#include "stimuli/json_source.hpp"
+#include "stimuli/scenes_path.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -18,36 +19,14 @@ using nlohmann::json;
 
 constexpr std::array<std::string_view, 4> kFingerKeys = {"index", "middle", "ring", "little"};
 
-// nlohmann::json keeps no line numbers: the line of a field is found by searching the text
-// for the anchors in order (exact for files written one field per line, as ours are).
-int lineOf(const std::string& text, const std::vector<std::string>& anchors) {
-    std::size_t position = 0, found = std::string::npos;
-    for (const std::string& anchor : anchors) {
-        const std::size_t at = text.find(anchor, position);
-        if (at == std::string::npos) break;
-        found = at;
-        position = at + anchor.size();
-    }
-    if (found == std::string::npos) return 0;
-    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(found), '\n'));
-}
-
 std::string jsonKey(std::string_view s) { return "\"" + std::string(s) + "\""; }
 
 class Parser {
 public:
-    Parser(const std::string& text, const std::string& file, const hand::HandModel& model)
-        : text_(text), file_(file), model_(model) {}
+    Parser(const JsonSource& source, const hand::HandModel& model) : source_(source), model_(model) {}
 
     HandshapeLibrary parse() {
-        json root;
-        try {
-            root = json::parse(text_);
-        } catch (const json::parse_error& e) {
-            const std::size_t byte = std::min<std::size_t>(e.byte, text_.size());
-            const int line = 1 + static_cast<int>(std::count(text_.begin(), text_.begin() + static_cast<std::ptrdiff_t>(byte), '\n'));
-            throw InputError(file_, line, "", std::string("not valid JSON: ") + e.what());
-        }
+        const json& root = source_.root;
         if (!root.is_object()) fail({}, "", "the top level must be an object");
         for (const auto& [key, value] : root.items()) {
             static const std::set<std::string> known = {"format", "version", "about", "fingerPresets",
@@ -61,7 +40,7 @@ public:
             fail({"\"handshapes\""}, "handshapes", "required: an array of handshapes");
         }
         HandshapeLibrary library;
-        library.file = file_;
+        library.file = source_.file;
         std::set<std::string> names;
         int index = 0;
         for (const json& shape : root["handshapes"]) {
@@ -80,7 +59,7 @@ public:
 private:
     [[noreturn]] void fail(const std::vector<std::string>& anchors, const std::string& field,
                            const std::string& message) const {
-        throw InputError(file_, lineOf(text_, anchors), field, message);
+        source_.fail(anchors, field, message);
     }
 
     float number(const json& value, const std::vector<std::string>& anchors, const std::string& field,
@@ -260,8 +239,7 @@ private:
         return out;
     }
 
-    const std::string& text_;
-    const std::string& file_;
+    const JsonSource& source_;
     const hand::HandModel& model_;
     std::map<std::string, hand::FingerControls> fingerPresets_;
     std::map<std::string, hand::ThumbControls> thumbPresets_;
@@ -286,15 +264,18 @@ const Handshape& HandshapeLibrary::at(std::string_view name) const {
 
 HandshapeLibrary parseHandshapes(const std::string& text, const std::string& fileName,
                                  const hand::HandModel& model) {
-    return Parser(text, fileName, model).parse();
+    const JsonSource source = parseJsonText(text, fileName);
+    return Parser(source, model).parse();
+}
+
+std::filesystem::path handshapesFile(const std::filesystem::path& explicitFile,
+                                     const std::filesystem::path& scenesDir) {
+    return explicitFile.empty() ? resolveScenesDir(scenesDir) / "handshapes.json" : explicitFile;
 }
 
 HandshapeLibrary loadHandshapes(const std::filesystem::path& file, const hand::HandModel& model) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(file.string(), 0, "", "cannot open the handshape file (does it exist?)");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return parseHandshapes(buffer.str(), file.string(), model);
+    const JsonSource source = readJsonFile(file);
+    return Parser(source, model).parse();
 }
 
 }  // namespace signstim::stimuli

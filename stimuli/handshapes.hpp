@@ -44,4 +44,9 @@ HandshapeLibrary parseHandshapes(const std::string& text, const std::string& fil
                                  const hand::HandModel& model);
 HandshapeLibrary loadHandshapes(const std::filesystem::path& file, const hand::HandModel& model);
 
+// The handshape file a command reads: `explicitFile` when given (its --shapes option), else
+// SCENES/handshapes.json with SCENES = resolveScenesDir(scenesDir) (stimuli/scenes_path.hpp).
+std::filesystem::path handshapesFile(const std::filesystem::path& explicitFile,
+                                     const std::filesystem::path& scenesDir);
+
 }  // namespace signstim::stimuli

@@ -1,13 +1,13 @@
 #include "stimuli/sensor_io.hpp"
 
 #include "common/error.hpp"
+#include "stimuli/json_source.hpp"
 
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -20,14 +20,6 @@ using nlohmann::json;
 constexpr std::array<std::string_view, hand::kSensorCount> kSensorNames = {"hand",   "thumb", "index",
                                                                            "middle", "ring",  "little"};
 constexpr std::array<std::string_view, 8> kColumns = {"time", "sensor", "x", "y", "z", "azimuth", "elevation", "roll"};
-
-std::string readFile(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(file.string(), 0, "", "cannot open the file (does it exist and is it readable?)");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
 
 std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
@@ -77,25 +69,18 @@ std::string formatNumber(double v) {
 }
 
 // ---- JSON helpers for the calibration ----
+// `path` is a list of keys: the field is "digits.index.lengthMm", the line that of the last key.
 struct JsonReader {
-    const std::string& text;
-    const std::string& file;
+    const JsonSource& source;
 
-    int lineOf(const std::vector<std::string>& anchors) const {
-        std::size_t position = 0, found = std::string::npos;
-        for (const std::string& anchor : anchors) {
-            const std::size_t at = text.find("\"" + anchor + "\"", position);
-            if (at == std::string::npos) break;
-            found = at;
-            position = at + anchor.size();
-        }
-        if (found == std::string::npos) return 0;
-        return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(found), '\n'));
-    }
     [[noreturn]] void fail(const std::vector<std::string>& path, const std::string& message) const {
         std::string field;
-        for (const auto& p : path) field += (field.empty() ? "" : ".") + p;
-        throw InputError(file, lineOf(path), field, message);
+        std::vector<std::string> anchors;
+        for (const auto& p : path) {
+            field += (field.empty() ? "" : ".") + p;
+            anchors.push_back("\"" + p + "\"");
+        }
+        source.fail(anchors, field, message);
     }
     float number(const json& parent, const std::vector<std::string>& path, float minimum, float maximum,
                  bool required = true, float fallback = 0.0f) const {
@@ -220,19 +205,13 @@ std::vector<SensorSample> parseSensorSamples(const std::string& text, const std:
 }
 
 std::vector<SensorSample> loadSensorSamples(const std::filesystem::path& file) {
-    return parseSensorSamples(readFile(file), file.string());
+    return parseSensorSamples(readTextFile(file), file.string());
 }
 
 hand::SensorCalibration parseSensorCalibration(const std::string& text, const std::string& file) {
-    json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        const std::size_t byte = std::min<std::size_t>(e.byte, text.size());
-        throw InputError(file, 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n')),
-                         "", std::string("not valid JSON: ") + e.what());
-    }
-    const JsonReader r{text, file};
+    const JsonSource source = parseJsonText(text, file);
+    const json& root = source.root;
+    const JsonReader r{source};
     if (!root.is_object()) r.fail({}, "the top level must be an object");
     r.onlyKeys(root, {}, {"about", "side", "handThicknessMm", "handInitialRollDeg", "knuckleBowlRollDeg",
                           "palmBowlRollDeg", "sensorFromTipMm", "digits"});
@@ -268,7 +247,7 @@ hand::SensorCalibration parseSensorCalibration(const std::string& text, const st
 }
 
 hand::SensorCalibration loadSensorCalibration(const std::filesystem::path& file) {
-    return parseSensorCalibration(readFile(file), file.string());
+    return parseSensorCalibration(readTextFile(file), file.string());
 }
 
 std::string formatSensorCalibration(const hand::SensorCalibration& cal) {
