@@ -2,6 +2,7 @@
 // its handshape gallery and one posture of it (docs: app/avatar_builder.hpp, signer_pose.hpp).
 #include "app/avatar_builder.hpp"
 #include "app/avatar_render.hpp"
+#include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "app/signer_pose.hpp"
 #include "common/error.hpp"
@@ -17,7 +18,6 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <sstream>
 #include <string>
 
 namespace signstim::app {
@@ -50,27 +50,6 @@ render::Scene loadAvatar(const AvatarSource& o) {
 }
 
 BoneMapping mappingOf(const AvatarSource& o) { return o.boneMapFile.empty() ? BoneMapping{} : loadBoneMapping(o.boneMapFile); }
-
-glm::vec3 parseTriple(const std::string& text, const std::string& flag) {
-    std::stringstream in(text);
-    glm::vec3 v(0.0f);
-    char comma1 = 0, comma2 = 0;
-    if (!(in >> v.x >> comma1 >> v.y >> comma2 >> v.z) || comma1 != ',' || comma2 != ',' || !in.eof() ||
-        !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-        throw InputError("<command line>", 0, flag, "expected three numbers x,y,z, got '" + text + "'");
-    return v;
-}
-
-void parseSize(const std::string& text, std::uint32_t& w, std::uint32_t& h) {
-    unsigned width = 0, height = 0;
-    char x = 0;
-    std::stringstream in(text);
-    if (!(in >> width >> x >> height) || (x != 'x' && x != 'X') || !in.eof() || width < 16 || height < 16 ||
-        width > 8192 || height > 8192)
-        throw InputError("<command line>", 0, "--size", "expected WxH between 16 and 8192, got '" + text + "'");
-    w = width;
-    h = height;
-}
 
 // An extra hand rotation given as a rotation vector in degrees in the signing-space frame.
 glm::quat signingSpaceRotation(const glm::vec3& rotationVectorDeg) {
@@ -138,10 +117,8 @@ void registerAvatarCommands(Commands& commands) {
     shapes->callback([g] {
         const render::Scene scene = loadAvatar(g->source);
         const SignerRig rig(scene, mappingOf(g->source));
-        const std::filesystem::path file = g->shapesFile.empty()
-                                               ? stimuli::resolveScenesDir(g->source.scenesDir) / "handshapes.json"
-                                               : std::filesystem::path(g->shapesFile);
-        const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(file, rig.handModel());
+        const stimuli::HandshapeLibrary library =
+            stimuli::loadHandshapes(stimuli::handshapesFile(g->shapesFile, g->source.scenesDir), rig.handModel());
         const std::uint32_t rows = static_cast<std::uint32_t>((library.shapes.size() + g->columns - 1) / g->columns);
         renderToFile(scene, [&](int handle) { return galleryFrame(scene, rig, handle, library, g->columns); },
                      g->columns * g->cell, rows * g->cell, g->device, g->msaa, g->gallery);
@@ -175,14 +152,12 @@ void registerAvatarCommands(Commands& commands) {
     pose->add_option("--msaa", p->msaa, "Multisampling: 1 or 4");
     addAvatarOptions(pose, p->source);
     pose->callback([p] {
-        std::uint32_t width = 0, height = 0;
-        parseSize(p->size, width, height);
+        const ImageSize size = parseImageSize(p->size, "--size", {.minimum = 16, .maximum = 8192});
+        const std::uint32_t width = size.width, height = size.height;
         const render::Scene scene = loadAvatar(p->source);
         const SignerRig rig(scene, mappingOf(p->source));
-        const std::filesystem::path file = p->shapesFile.empty()
-                                               ? stimuli::resolveScenesDir(p->source.scenesDir) / "handshapes.json"
-                                               : std::filesystem::path(p->shapesFile);
-        const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(file, rig.handModel());
+        const stimuli::HandshapeLibrary library =
+            stimuli::loadHandshapes(stimuli::handshapesFile(p->shapesFile, p->source.scenesDir), rig.handModel());
         SignerPosture posture;
         posture.rightHand = library.at(p->right).controls;
         hand::ArmTarget right = rig.presentingTarget(hand::Side::Right);

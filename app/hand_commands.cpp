@@ -1,12 +1,12 @@
 // `signstim hand shapes|pose|from-sensors` and `signstim bench hand`: the kinematic hand of
 // SPEC §1–§2 from the command line.
+#include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "hand/hand_model.hpp"
 #include "hand/sensor_hand.hpp"
 #include "stimuli/handshapes.hpp"
-#include "stimuli/scenes_path.hpp"
 #include "stimuli/sensor_io.hpp"
 
 #include <chrono>
@@ -35,20 +35,13 @@ struct HandOptions {
 };
 
 hand::HandModel modelFor(const HandOptions& o) {
-    if (!(o.handLengthMm >= 100.0f && o.handLengthMm <= 300.0f)) {
-        throw InputError("<command line>", 0, "--hand-length", "must be between 100 and 300 mm");
-    }
-    if (!(o.handBreadthMm >= 40.0f && o.handBreadthMm <= 150.0f)) {
-        throw InputError("<command line>", 0, "--hand-breadth", "must be between 40 and 150 mm");
-    }
+    requireInRange(o.handLengthMm, 100.0, 300.0, "--hand-length", "mm");
+    requireInRange(o.handBreadthMm, 40.0, 150.0, "--hand-breadth", "mm");
     return hand::buildHandModel(hand::scaledHandDimensions(o.handLengthMm, o.handBreadthMm));
 }
 
 stimuli::HandshapeLibrary library(const HandOptions& o, const hand::HandModel& model) {
-    const std::filesystem::path file = o.shapesFile.empty()
-                                           ? stimuli::resolveScenesDir(o.scenesDir) / "handshapes.json"
-                                           : std::filesystem::path(o.shapesFile);
-    return stimuli::loadHandshapes(file, model);
+    return stimuli::loadHandshapes(stimuli::handshapesFile(o.shapesFile, o.scenesDir), model);
 }
 
 void addLibraryOptions(CLI::App* command, const std::shared_ptr<HandOptions>& o) {
@@ -113,7 +106,7 @@ void runFromSensors(const HandOptions& o) {
     const std::filesystem::path out(o.out);
     const std::string extension = out.extension().string();
     if (extension != ".json" && extension != ".csv") {
-        throw InputError("<command line>", 0, "--out", "must end in .json or .csv, got '" + o.out + "'");
+        throw commandLineError("--out", "must end in .json or .csv, got '" + o.out + "'");
     }
     const hand::SensorCalibration calibration = stimuli::loadSensorCalibration(o.calibration);
     const std::vector<stimuli::SensorSample> samples = stimuli::loadSensorSamples(o.samples);
@@ -157,7 +150,7 @@ double measure(double seconds, Body&& body) {
 }
 
 void runBench(const HandOptions& o) {
-    if (!(o.seconds > 0.0 && o.seconds <= 600.0)) throw InputError("<command line>", 0, "--seconds", "must be in (0, 600]");
+    if (!(o.seconds > 0.0 && o.seconds <= 600.0)) throw commandLineError("--seconds", "must be in (0, 600]");
     const hand::HandModel model = hand::buildHandModel();
     const std::vector<hand::HandControls> controls = benchControls();
     volatile float sink = 0.0f;  // keeps the work observable

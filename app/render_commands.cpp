@@ -1,5 +1,6 @@
 // `signstim render-gltf`: renders a glTF file (optionally animated) to a PNG, a numbered PNG
 // sequence or an MP4.
+#include "app/cli_values.hpp"
 #include "app/commands.hpp"
 
 #include "common/atomic_file.hpp"
@@ -22,7 +23,6 @@ namespace signstim::app {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kCli = "<command line>";
 
 struct RenderGltfSettings {
     std::string file, out, size = "640x480", fps = "30", animation, camera, background, device;
@@ -33,59 +33,6 @@ struct RenderGltfSettings {
     bool quiet = false;
 };
 
-std::vector<float> parseFloats(const std::string& text, const std::string& field, std::size_t minCount,
-                               std::size_t maxCount) {
-    std::vector<float> values;
-    std::stringstream stream(text);
-    for (std::string item; std::getline(stream, item, ',');) {
-        try {
-            std::size_t used = 0;
-            const float v = std::stof(item, &used);
-            if (used != item.size() || !std::isfinite(v)) throw std::invalid_argument(item);
-            values.push_back(v);
-        } catch (const std::logic_error&) {
-            throw InputError(kCli, 0, field, "'" + item + "' is not a number (in '" + text + "')");
-        }
-    }
-    if (values.size() < minCount || values.size() > maxCount)
-        throw InputError(kCli, 0, field, "'" + text + "' needs " + std::to_string(minCount) +
-                                             (minCount == maxCount ? "" : "-" + std::to_string(maxCount)) +
-                                             " comma-separated numbers");
-    return values;
-}
-
-void parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
-    unsigned w = 0, h = 0;
-    char tail = 0;
-    if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
-        throw InputError(kCli, 0, "--size", "'" + text + "' must be WIDTHxHEIGHT, e.g. 1280x720 (1..16384)");
-    width = w;
-    height = h;
-}
-
-float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-
-// "#rrggbb", "r,g,b[,a]" (0..1, sRGB like the hex form) or "transparent" -> linear RGBA.
-glm::vec4 parseBackground(const std::string& text) {
-    if (text == "transparent") return glm::vec4(0.0f);
-    glm::vec4 srgb(1.0f);
-    if (!text.empty() && text[0] == '#') {
-        unsigned r, g, b;
-        char tail = 0;
-        if (text.size() != 7 || std::sscanf(text.c_str() + 1, "%2x%2x%2x%c", &r, &g, &b, &tail) != 3)
-            throw InputError(kCli, 0, "--background", "'" + text + "' must be #rrggbb, r,g,b[,a] or transparent");
-        srgb = glm::vec4(r / 255.0f, g / 255.0f, b / 255.0f, 1.0f);
-    } else {
-        const std::vector<float> v = parseFloats(text, "--background", 3, 4);
-        for (std::size_t i = 0; i < v.size(); ++i) {
-            if (v[i] < 0.0f || v[i] > 1.0f)
-                throw InputError(kCli, 0, "--background", "'" + text + "': components are 0..1");
-            srgb[static_cast<int>(i)] = v[i];
-        }
-    }
-    return glm::vec4(srgbToLinear(srgb.r), srgbToLinear(srgb.g), srgbToLinear(srgb.b), srgb.a);
-}
-
 // "eye=x,y,z;target=x,y,z;up=x,y,z;fov=deg" — every key optional; unset keys keep `camera`.
 render::Camera parseCamera(const std::string& text, render::Camera camera) {
     std::stringstream stream(text);
@@ -94,18 +41,17 @@ render::Camera parseCamera(const std::string& text, render::Camera camera) {
         const std::size_t eq = item.find('=');
         const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
         if (key == "eye" || key == "target" || key == "up") {
-            const std::vector<float> v = parseFloats(value, "--camera " + key, 3, 3);
-            (key == "eye" ? camera.eye : key == "target" ? camera.target : camera.up) = glm::vec3(v[0], v[1], v[2]);
+            (key == "eye" ? camera.eye : key == "target" ? camera.target : camera.up) = parseTriple(value, "--camera " + key);
         } else if (key == "fov") {
-            const float fov = parseFloats(value, "--camera fov", 1, 1)[0];
-            if (fov <= 1.0f || fov >= 179.0f) throw InputError(kCli, 0, "--camera", "fov must be in (1, 179) degrees");
+            const float fov = parseNumber(value, "--camera fov");
+            if (fov <= 1.0f || fov >= 179.0f) throw commandLineError("--camera", "fov must be in (1, 179) degrees");
             camera.verticalFovDegrees = fov;
         } else {
-            throw InputError(kCli, 0, "--camera", "unknown key '" + key + "' (use eye=x,y,z;target=x,y,z;up=x,y,z;fov=deg)");
+            throw commandLineError("--camera", "unknown key '" + key + "' (use eye=x,y,z;target=x,y,z;up=x,y,z;fov=deg)");
         }
     }
     if (glm::length(camera.eye - camera.target) < 1e-6f)
-        throw InputError(kCli, 0, "--camera", "eye and target must differ");
+        throw commandLineError("--camera", "eye and target must differ");
     const float distance = glm::length(camera.eye - camera.target);
     camera.farPlane = std::max(camera.farPlane, distance * 4.0f);
     camera.nearPlane = std::min(camera.nearPlane, distance * 0.05f);
@@ -120,7 +66,7 @@ int chooseAnimation(const render::Scene& scene, const std::string& request, cons
     std::string names;
     for (std::size_t i = 0; i < scene.animations.size(); ++i)
         names += (i ? ", " : "") + std::to_string(i) + " '" + scene.animations[i].name + "'";
-    throw InputError(kCli, 0, "--animation",
+    throw commandLineError("--animation",
                      "'" + request + "' is not an animation of " + file +
                          (names.empty() ? " (it has none)" : " (it has: " + names + ")"));
 }
@@ -134,13 +80,15 @@ std::string lowerExtension(const fs::path& path) {
 void renderGltf(const RenderGltfSettings& s) {
     using Clock = std::chrono::steady_clock;
     render::RendererOptions options;
-    parseSize(s.size, options.width, options.height);
+    const ImageSize size = parseImageSize(s.size, "--size");
+    options.width = size.width;
+    options.height = size.height;
     options.msaa = s.msaa;
     options.device = s.device;
-    if (s.bitDepth != 8 && s.bitDepth != 16) throw InputError(kCli, 0, "--bit-depth", "must be 8 or 16");
+    if (s.bitDepth != 8 && s.bitDepth != 16) throw commandLineError("--bit-depth", "must be 8 or 16");
     options.format = s.bitDepth == 16 ? render::PixelFormat::Rgba16 : render::PixelFormat::Rgba8;
-    if (!s.background.empty()) options.background = parseBackground(s.background);
-    if (s.pngCompression < 0 || s.pngCompression > 9) throw InputError(kCli, 0, "--png-compression", "must be 0..9");
+    if (!s.background.empty()) options.background = parseColour(s.background, "--background");
+    if (s.pngCompression < 0 || s.pngCompression > 9) throw commandLineError("--png-compression", "must be 0..9");
     render::VideoOptions video;
     video.frameRate = render::parseFrameRate(s.fps);
 
@@ -152,14 +100,14 @@ void renderGltf(const RenderGltfSettings& s) {
     const std::string ext = lowerExtension(out);
     const bool singleImage = ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff";
     int frames = s.frames;
-    if (frames < 0) throw InputError(kCli, 0, "--frames", "must be at least 1");
+    if (frames < 0) throw commandLineError("--frames", "must be at least 1");
     if (frames == 0)
         frames = singleImage || duration <= 0.0f ? 1 : static_cast<int>(std::ceil(duration * video.frameRate.value() - 1e-4)) + 1;
     if (singleImage && frames > 1)
         throw InputError(out.string(), 0, "--frames", std::to_string(frames) +
                                                           " frames need a directory or an .mp4 output, not a single image");
     if (ext == ".mp4" && (options.width % 2 || options.height % 2))
-        throw InputError(kCli, 0, "--size", s.size + ": MP4 (H.264, yuv420p) needs an even width and height");
+        throw commandLineError("--size", s.size + ": MP4 (H.264, yuv420p) needs an even width and height");
     // Fail on a bad output location now, not after rendering.
     ensureWritableDirectory(singleImage || ext == ".mp4" ? out.parent_path() : out);
 

@@ -1,0 +1,55 @@
+#pragma once
+// Values given on the command line as text (--size 640x480, --gaze 0,100,400, --background
+// '#ffffff'): one parser each, shared by every command. Each throws
+// InputError("<command line>", 0, FLAG, "expected ..., got '...'") (exit status 2).
+#include "common/error.hpp"
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace signstim::app {
+
+inline constexpr const char* kCommandLine = "<command line>";  // the "file" of flag errors
+
+// InputError("<command line>", 0, flag, message), for checks of one command's own.
+InputError commandLineError(const std::string& flag, const std::string& message);
+
+struct SizeLimits {
+    std::uint32_t minimum = 1;      // each side, inclusive
+    std::uint32_t maximum = 16384;  // each side, inclusive
+    bool even = false;              // both sides even (H.264 yuv420p panels)
+};
+
+struct ImageSize {
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+};
+
+// "WxH" (or "WXH"), decimal, nothing else: "640x480".
+ImageSize parseImageSize(const std::string& text, const std::string& flag, const SizeLimits& limits = {});
+
+// One finite decimal number ("0.5", "-3", "1e-2"; spaces around it allowed).
+float parseNumber(const std::string& text, const std::string& flag);
+
+// minCount..maxCount finite numbers separated by commas ("1,2,3"; spaces around each allowed).
+std::vector<float> parseNumbers(const std::string& text, const std::string& flag, std::size_t minCount,
+                                std::size_t maxCount);
+
+// "x,y,z": three finite numbers.
+glm::vec3 parseTriple(const std::string& text, const std::string& flag);
+
+// "#rrggbb", "r,g,b[,a]" (components 0..1; r,g,b sRGB like the hex form) or "transparent"
+// -> linear RGBA (alpha as given, 1 when absent; transparent is 0,0,0,0).
+glm::vec4 parseColour(const std::string& text, const std::string& flag);
+
+// value itself when minimum <= value <= maximum (NaN is refused); `unit` ends the message
+// ("mm" -> "expected 100 to 300 mm, got 350").
+double requireInRange(double value, double minimum, double maximum, const std::string& flag,
+                      const std::string& unit = "");
+
+}  // namespace signstim::app
