@@ -2,14 +2,13 @@
 // exit status and files.
 #include "hand/sensor_hand.hpp"
 #include "stimuli/sensor_io.hpp"
+#include "tests/app/run_command.hpp"
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
+#include <unistd.h>
 
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -20,36 +19,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-    int status = -1;
-    std::string output;  // stdout and stderr together
-};
-
-CommandResult run(const std::string& arguments) {
-    CommandResult r;
-    const std::string command = std::string(SIGNSTIM_EXE) + " " + arguments + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (pipe == nullptr) return r;
-    std::array<char, 4096> buffer{};
-    std::size_t n = 0;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
-    const int status = ::pclose(pipe);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-// Stdout only (for JSON).
-CommandResult runStdout(const std::string& arguments) {
-    CommandResult r;
-    const std::string command = std::string(SIGNSTIM_EXE) + " " + arguments + " 2>/dev/null";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    std::array<char, 4096> buffer{};
-    std::size_t n = 0;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
-    const int status = ::pclose(pipe);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+using signstim::test::Capture;
+using signstim::test::CommandResult;
+using signstim::test::runSignstim;
 
 fs::path scratchDir(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / ("signstim_hand_cli_" + name + "_" + std::to_string(::getpid()));
@@ -63,7 +35,7 @@ void writeText(const fs::path& path, const std::string& text) { std::ofstream(pa
 const std::string kScenes = std::string("--scenes ") + SIGNSTIM_SOURCE_DIR + "/scenes";
 
 TEST(HandCliTest, PoseJsonListsSixteenVrmBonesAndFiveTips) {
-    const CommandResult r = runStdout("hand pose --shape O --json " + kScenes);
+    const CommandResult r = runSignstim("hand pose --shape O --json " + kScenes, Capture::StdoutOnly);
     ASSERT_EQ(r.status, 0) << r.output;
     const nlohmann::json out = nlohmann::json::parse(r.output);
     EXPECT_EQ(out["side"], "right");
@@ -88,8 +60,8 @@ TEST(HandCliTest, PoseJsonListsSixteenVrmBonesAndFiveTips) {
 }
 
 TEST(HandCliTest, LeftPoseIsTheMirrorOfTheRight) {
-    const CommandResult right = runStdout("hand pose --shape 5 --json " + kScenes);
-    const CommandResult left = runStdout("hand pose --shape 5 --side left --json " + kScenes);
+    const CommandResult right = runSignstim("hand pose --shape 5 --json " + kScenes, Capture::StdoutOnly);
+    const CommandResult left = runSignstim("hand pose --shape 5 --side left --json " + kScenes, Capture::StdoutOnly);
     ASSERT_EQ(right.status, 0);
     ASSERT_EQ(left.status, 0);
     const auto r = nlohmann::json::parse(right.output), l = nlohmann::json::parse(left.output);
@@ -101,14 +73,14 @@ TEST(HandCliTest, LeftPoseIsTheMirrorOfTheRight) {
 }
 
 TEST(HandCliTest, ShapesListsNamesWithLabels) {
-    const CommandResult r = run("hand shapes " + kScenes);
+    const CommandResult r = runSignstim("hand shapes " + kScenes);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("bent-B\tbent_B\n"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("P\t-\n"), std::string::npos);
 }
 
 TEST(HandCliTest, UnknownShapeIsAnInputError) {
-    const CommandResult r = run("hand pose --shape J " + kScenes);
+    const CommandResult r = runSignstim("hand pose --shape J " + kScenes);
     EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_NE(r.output.find("unknown handshape 'J'"), std::string::npos) << r.output;
 }
@@ -137,16 +109,16 @@ protected:
 
 TEST_F(FromSensorsTest, WritesJointsAndBoxesForEverySample) {
     writeText(dir / "samples.csv", goodCsv);
-    const CommandResult r = run("hand from-sensors " + (dir / "samples.csv").string() + " --calibration " + (dir / "cal.json").string() +
-                      " --out " + (dir / "hand.json").string());
+    const CommandResult r = runSignstim("hand from-sensors " + (dir / "samples.csv").string() + " --calibration " +
+                                        (dir / "cal.json").string() + " --out " + (dir / "hand.json").string());
     ASSERT_EQ(r.status, 0) << r.output;
     std::ifstream in(dir / "hand.json");
     const nlohmann::json out = nlohmann::json::parse(in);
     ASSERT_EQ(out["samples"].size(), 2u);
     EXPECT_EQ(out["samples"][1]["segments"]["rightIndexDistal"].size(), 8u);
     EXPECT_EQ(out["samples"][1]["joints"]["index"]["C"].size(), 3u);
-    const CommandResult csv = run("hand from-sensors " + (dir / "samples.csv").string() + " --calibration " +
-                        (dir / "cal.json").string() + " --out " + (dir / "hand.csv").string());
+    const CommandResult csv = runSignstim("hand from-sensors " + (dir / "samples.csv").string() + " --calibration " +
+                                          (dir / "cal.json").string() + " --out " + (dir / "hand.csv").string());
     ASSERT_EQ(csv.status, 0) << csv.output;
     EXPECT_TRUE(fs::exists(dir / "hand.csv"));
 }
@@ -159,8 +131,8 @@ TEST_F(FromSensorsTest, MalformedCsvNamesTheLineAndWritesNothing) {
     bad.replace(start, bad.find('\n', start) - start, "0.0000,middle,1,2,3,0,high,0");
     writeText(dir / "samples.csv", bad);
     const fs::path out = dir / "hand.json";
-    const CommandResult r = run("hand from-sensors " + (dir / "samples.csv").string() + " --calibration " + (dir / "cal.json").string() +
-                      " --out " + out.string());
+    const CommandResult r = runSignstim("hand from-sensors " + (dir / "samples.csv").string() + " --calibration " +
+                                        (dir / "cal.json").string() + " --out " + out.string());
     EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_NE(r.output.find("samples.csv:5"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("elevation"), std::string::npos) << r.output;

@@ -2,15 +2,13 @@
 // validation layer on: SIGNSTIM_VALIDATION=1). Input files are built here (synthetic arm).
 #include "renderer/gltf_writer.hpp"
 #include "renderer/image_io.hpp"
+#include "tests/app/run_command.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/quaternion.hpp>
 
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
-#include <sys/wait.h>
 
 using namespace signstim::render;
 namespace fs = std::filesystem;
@@ -25,24 +23,14 @@ fs::path testDir() {
     return dir;
 }
 
-struct Result {
-    int status = -1;
-    std::string output;  // stdout + stderr
-};
+using Result = signstim::test::CommandResult;
 
+// The signstim binary with the Vulkan validation layer on; stdout and stderr together.
 Result runSignstim(const std::string& arguments) {
-    const std::string command = "SIGNSTIM_VALIDATION=1 '" + std::string(SIGNSTIM_EXECUTABLE) + "' " + arguments + " 2>&1";
-    Result result;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 512> buffer{};
-    while (std::fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
-    const int status = ::pclose(pipe);
-    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
+    return signstim::test::runSignstim(arguments, signstim::test::Capture::StdoutAndStderr, "SIGNSTIM_VALIDATION=1");
 }
 
-std::string q(const fs::path& path) { return "'" + path.string() + "'"; }
+std::string q(const fs::path& path) { return signstim::test::shellQuote(path.string()); }
 
 // A skinned cylinder (radius 0.1, height 1) on two joints; the lower joint bends 90° about Z
 // over one second (LINEAR). Synthetic test geometry.
@@ -153,13 +141,10 @@ TEST(RenderGltfCli, Mp4OutputIsH264AtTheRequestedRate) {
     const Result r = runSignstim("render-gltf " + q(writeArm(dir)) + " --out " + q(out) +
                               " --size 128x96 --fps 30000/1001 --quiet");
     ASSERT_EQ(r.status, 0) << r.output;
-    FILE* pipe = ::popen(("ffprobe -v error -count_frames -show_entries stream=codec_name,pix_fmt,nb_read_frames,"
-                          "r_frame_rate -of default=noprint_wrappers=1 " + q(out)).c_str(), "r");
-    ASSERT_NE(pipe, nullptr);
-    std::string probe;
-    std::array<char, 256> buffer{};
-    while (std::fgets(buffer.data(), buffer.size(), pipe)) probe += buffer.data();
-    ::pclose(pipe);
+    const std::string probe = signstim::test::runShell("ffprobe -v error -count_frames -show_entries "
+                                                       "stream=codec_name,pix_fmt,nb_read_frames,r_frame_rate "
+                                                       "-of default=noprint_wrappers=1 " + q(out))
+                                  .output;
     EXPECT_NE(probe.find("codec_name=h264"), std::string::npos) << probe;
     EXPECT_NE(probe.find("pix_fmt=yuv420p"), std::string::npos) << probe;
     // 1 s at 29.97 fps: ceil(29.97) + 1 = 31 frames, first and last key included.

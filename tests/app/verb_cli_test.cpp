@@ -1,11 +1,9 @@
 // `signstim train | verb | evaluate | reference-corpus` as a user runs them: the built binary,
 // its output, exit status and files.
+#include "tests/app/run_command.hpp"
+
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -19,22 +17,11 @@ namespace fs = std::filesystem;
 
 const fs::path kScenes = fs::path(SIGNSTIM_SOURCE_DIR) / "scenes";
 
-struct CommandResult {
-    int status = -1;
-    std::string output;  // stdout and stderr together
-};
+using signstim::test::CommandResult;
 
+// `signstim ARGUMENTS --scenes <the repository's scenes/>`, stdout and stderr together.
 CommandResult run(const std::string& arguments) {
-    CommandResult r;
-    const std::string command = std::string(SIGNSTIM_EXE) + " " + arguments + " --scenes " + kScenes.string() + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (pipe == nullptr) return r;
-    std::array<char, 4096> buffer{};
-    std::size_t n = 0;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
-    const int status = ::pclose(pipe);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return signstim::test::runSignstim(arguments + " --scenes " + kScenes.string());
 }
 
 std::string readFile(const fs::path& path) {
@@ -89,16 +76,11 @@ TEST(VerbCli, PointJsonIsAStartingAnimatorFile) {
     const CommandResult point = run("verb GIVE --subject 0.3 --object -0.9 --version point --json");
     ASSERT_EQ(point.status, 0) << point.output;
     std::ofstream(scenes / "animator" / "GIVE_s0.3_o-0.9.json") << point.output;
-    const std::string command = std::string(SIGNSTIM_EXE) + " verb GIVE --subject 0.3 --object -0.9 --version animator --json --scenes " +
-                                scenes.string() + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    std::string output;
-    std::array<char, 4096> buffer{};
-    std::size_t n = 0;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), n);
-    ASSERT_EQ(WEXITSTATUS(::pclose(pipe)), 0) << output;
+    const CommandResult animator = signstim::test::runSignstim(
+        "verb GIVE --subject 0.3 --object -0.9 --version animator --json --scenes " + scenes.string());
+    ASSERT_EQ(animator.status, 0) << animator.output;
     const nlohmann::json a = nlohmann::json::parse(point.output);
-    const nlohmann::json b = nlohmann::json::parse(output);
+    const nlohmann::json b = nlohmann::json::parse(animator.output);
     EXPECT_EQ(a["hands"], b["hands"]);
 }
 
@@ -115,9 +97,11 @@ TEST(VerbCli, UserMistakesAreClearErrors) {
     r = run("verb ASK --subject 0.3 --object 0.6 --version animator --json");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("ASK_s0.3_o0.6.json"), std::string::npos) << r.output;
-    r = run("verb ASK --subject 0.9 --object -0.6 --version point --out clip.mp4");
+    const fs::path clip = workDir() / "never.mp4";
+    r = run("verb ASK --subject 0.9 --object -0.6 --version point --size 15x15 --out " + clip.string());
     EXPECT_EQ(r.status, 2);
-    EXPECT_NE(r.output.find("rendering verbs needs the avatar (not yet available)"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(clip));
     r = run("verb ASK --object -0.6 --version point --json");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("--subject"), std::string::npos) << r.output;

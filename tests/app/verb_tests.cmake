@@ -1,6 +1,5 @@
 # CLI tests of the verb area: run the built `signstim` binary (train, verb, evaluate).
 signstim_add_test(signstim_app_verb_tests
   SOURCES verb_cli_test.cpp
-  LIBS signstim_stimuli signstim_common nlohmann_json::nlohmann_json)
-target_compile_definitions(signstim_app_verb_tests PRIVATE SIGNSTIM_EXE="$<TARGET_FILE:signstim>")
+  LIBS signstim_stimuli signstim_common nlohmann_json::nlohmann_json signstim_test_run_command)
 add_dependencies(signstim_app_verb_tests signstim)

@@ -1,0 +1,34 @@
+#include "tests/app/run_command.hpp"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+
+namespace signstim::test {
+
+CommandResult runShell(const std::string& command, Capture capture) {
+    CommandResult result;
+    const std::string line = command + (capture == Capture::StdoutOnly ? " 2>/dev/null" : " 2>&1");
+    FILE* pipe = ::popen(line.c_str(), "r");
+    if (pipe == nullptr) return result;
+    std::array<char, 4096> buffer{};
+    std::size_t n = 0;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+    const int status = ::pclose(pipe);
+    result.status = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+CommandResult runSignstim(const std::string& arguments, Capture capture, const std::string& environment) {
+    return runShell((environment.empty() ? "" : environment + " ") + shellQuote(SIGNSTIM_EXE) + " " + arguments,
+                    capture);
+}
+
+std::string shellQuote(const std::string& text) {
+    std::string quoted = "'";
+    for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+}  // namespace signstim::test

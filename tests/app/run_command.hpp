@@ -1,0 +1,29 @@
+#pragma once
+// Running commands from the CLI tests: the built `signstim` binary (or any shell command),
+// with its output and exit status, as a user would see them.
+#include <string>
+
+namespace signstim::test {
+
+struct CommandResult {
+    int status = -1;     // exit status; -1 when the command could not run or did not exit
+    std::string output;  // what it wrote (see Capture)
+};
+
+enum class Capture {
+    StdoutAndStderr,  // both streams, interleaved (messages)
+    StdoutOnly,       // stdout alone; stderr discarded (JSON on stdout)
+};
+
+// `command` through /bin/sh.
+CommandResult runShell(const std::string& command, Capture capture = Capture::StdoutAndStderr);
+
+// The signstim binary of this build with `arguments` (shell syntax: quote paths with
+// shellQuote). `environment`: assignments put before the command, e.g. "SIGNSTIM_VALIDATION=1".
+CommandResult runSignstim(const std::string& arguments, Capture capture = Capture::StdoutAndStderr,
+                          const std::string& environment = "");
+
+// `text` as one shell word: 'text', with any ' inside escaped.
+std::string shellQuote(const std::string& text);
+
+}  // namespace signstim::test
