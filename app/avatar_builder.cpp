@@ -70,9 +70,19 @@ struct Ring {
     float ru = 0.01f, rv = 0.01f;
     Weights weights;
     float exponent = 2.0f;
+    // Hand skin: the texture coordinate carries the palmar–dorsal tone (see skinToneU).
+    bool palmTone = false;
     // Optional per-point override (palm: the distal edge follows the knuckle arc).
     std::function<void(glm::vec3& p, Weights& w, float cosA, float sinA)> adjust;
 };
+
+// The skin material's base colour is a 2×1 texture: texel 0 the back of the hand (and the
+// face), texel 1 the palm, slightly lighter and pinker as on real hands. Hand vertices pick
+// their tone with u (linear filtering blends the two over the sides of the fingers and the
+// edges of the palm); every other skin vertex keeps u = 0, the back tone.
+constexpr float kBackU = 0.25f, kPalmU = 0.75f;  // texel centres
+// c: cosine of the vertex's angle from the palmar direction (+1 palmar, -1 dorsal).
+float skinToneU(float c) { return kBackU + (kPalmU - kBackU) * smoothstep(-0.25f, 0.35f, c); }
 
 float superPow(float c, float exponent) {
     return std::copysign(std::pow(std::fabs(c), 2.0f / exponent), c);
@@ -107,6 +117,7 @@ public:
                 if (ring.adjust) ring.adjust(pos, w, c, s);
                 render::Vertex v;
                 v.position = pos;
+                if (ring.palmTone) v.uv = {skinToneU(c), 0.5f};
                 w.toVertex(v);
                 p.vertices.push_back(v);
             }
@@ -123,6 +134,7 @@ public:
             const glm::vec3 axis = glm::normalize(glm::cross(ring.u, ring.v));
             render::Vertex v;
             v.position = ring.center + axis * offset;
+            if (ring.palmTone) v.uv = {skinToneU(0.0f), 0.5f};
             Weights w = ring.weights;
             w.toVertex(v);
             const auto pole = static_cast<std::uint32_t>(p.vertices.size());
@@ -216,7 +228,7 @@ std::string sideName(hand::Side side) { return side == hand::Side::Right ? "righ
 
 // Materials (linear RGB). Sign-language video practice: a plain dark top, skin that contrasts
 // with it, a plain background and even light (the renderer's defaults).
-enum MaterialId { kSkin = 0, kTop, kEyeWhite, kIris, kHair, kLips };
+enum MaterialId { kSkin = 0, kTop, kEyeWhite, kIris, kHair, kLips, kNail };
 
 std::vector<render::Material> avatarMaterials() {
     const auto make = [](const char* name, glm::vec3 color, float roughness) {
@@ -227,12 +239,39 @@ std::vector<render::Material> avatarMaterials() {
         m.roughnessFactor = roughness;
         return m;
     };
-    return {make("skin", {0.56f, 0.33f, 0.22f}, 0.65f),
+    render::Material skin = make("skin", {1.0f, 1.0f, 1.0f}, 0.65f);
+    skin.baseColorTexture = 0;  // skinToneTexture(): back (0.56, 0.33, 0.22), palm lighter
+    return {skin,
             make("top", {0.018f, 0.020f, 0.028f}, 0.85f),
             make("eyeWhite", {0.78f, 0.77f, 0.74f}, 0.35f),
             make("iris", {0.04f, 0.025f, 0.015f}, 0.3f),
             make("hair", {0.022f, 0.015f, 0.011f}, 0.75f),
-            make("lips", {0.36f, 0.12f, 0.10f}, 0.5f)};
+            make("lips", {0.36f, 0.12f, 0.10f}, 0.5f),
+            // Paler and pinker than the skin, a little glossy: the back of a finger reads
+            // as the back (from the front a curled finger's back otherwise looks like a palm).
+            make("nail", {0.72f, 0.47f, 0.42f}, 0.45f)};
+}
+
+std::uint8_t srgbByte(float linear) {
+    const float s = linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    return static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0f, 1.0f) * 255.0f));
+}
+
+// The skin tones (linear RGB; stored sRGB as glTF base-colour textures are).
+void addSkinToneTexture(render::Scene& scene) {
+    const glm::vec3 back{0.56f, 0.33f, 0.22f}, palm{0.66f, 0.38f, 0.29f};
+    render::ImageData image;
+    image.name = "skinTone";
+    image.width = 2;
+    image.height = 1;
+    for (const glm::vec3& c : {back, palm})
+        image.rgba.insert(image.rgba.end(), {srgbByte(c.r), srgbByte(c.g), srgbByte(c.b), 255});
+    scene.images.push_back(std::move(image));
+    render::Texture texture;
+    texture.image = 0;
+    texture.mipmaps = false;
+    texture.wrapS = texture.wrapT = render::Wrap::ClampToEdge;
+    scene.textures.push_back(texture);
 }
 
 struct HandBones {
@@ -298,6 +337,7 @@ void buildHand(MeshBuilder& mesh, const hand::HandModel& model, hand::Side side,
             ring.v = dirWorld(rot[seg] * glm::vec3(0, 1, 0));
             ring.ru = r * 0.88f * kMmToM;  // a little flatter palmar–dorsal
             ring.rv = r * kMmToM;
+            ring.palmTone = true;
             // Weights: palm -> bone 0 -> bone 1 -> bone 2, each blended across its joint.
             Weights w(bones.hand);
             for (int k = 0; k < 3; ++k) {
@@ -307,14 +347,82 @@ void buildHand(MeshBuilder& mesh, const hand::HandModel& model, hand::Side side,
             ring.weights = w;
             return ring;
         };
+        if (digit == 0) {
+            // Round the thumb's base: with the thumb spread away from the palm (G, L, Y) its
+            // start shows beside the thenar, and a flat end would read as a cut.
+            for (int k = 4; k >= 1; --k) {
+                const float a = 0.5f * kPi * static_cast<float>(k) / 5.0f;
+                rings.push_back(ringAt(startS, std::cos(a), -0.7f * radius[0] * std::sin(a)));
+            }
+        }
         for (float s : samples) rings.push_back(ringAt(s, 1.0f, 0.0f));
         // Round fingertip.
         for (int k = 1; k <= 4; ++k) {
             const float a = 0.5f * kPi * static_cast<float>(k) / 5.0f;
             rings.push_back(ringAt(at[3] - tipR, std::cos(a), tipR * std::sin(a)));
         }
-        mesh.tube(kSkin, rings, 12, 1.0f * kMmToM, tipR * (1.0f - std::sin(0.4f * kPi)) * kMmToM + 0.3f * kMmToM);
+        const float startPole = digit == 0 ? 0.7f * radius[0] * (1.0f - std::sin(0.4f * kPi)) + 0.3f : 1.0f;
+        mesh.tube(kSkin, rings, 12, startPole * kMmToM, tipR * (1.0f - std::sin(0.4f * kPi)) * kMmToM + 0.3f * kMmToM);
         (void)bodyIndex;
+
+        // Fingernail: a thin rounded plate on the dorsal side (-x) of the distal bone,
+        // skinned rigidly to it. Built as a flat lens (unit ring: x across its thickness, y
+        // across its width) bent onto the finger's elliptical section; its rim and its
+        // proximal end (under the cuticle) sink just below the skin, its middle stands
+        // ~0.4 mm proud. The distal skin is not rigid within blendHalf[2] of the DIP (weights
+        // blend across the joint), so the nail starts beyond most of that blend.
+        const float length = at[3] - at[2];
+        const float capStart = length - tipR;  // the round fingertip cap begins here
+        const float rCap = radius[2] + (radius[3] - radius[2]) * capStart / length;
+        const auto sectionRadius = [&](float sd) {  // the skin's radius at sd along the bone
+            if (sd <= capStart) return radius[2] + (radius[3] - radius[2]) * sd / length;
+            const float q = std::min((sd - capStart) / tipR, 1.0f);
+            return rCap * std::sqrt(1.0f - q * q);
+        };
+        const float nailEnd = length - 0.3f * tipR;
+        const float nailStart = std::max(nailEnd - 0.62f * length, 0.8f * blendHalf[2]);
+        const float halfWidth = 0.68f * radius[3];
+        const float halfThick = 0.5f;
+        const int nailRings = 10;
+        std::vector<Ring> nail;
+        for (int k = 0; k < nailRings; ++k) {
+            // Denser toward both ends, where the outline rounds off.
+            const float t = 0.02f + 0.96f * 0.5f * (1.0f - std::cos(kPi * static_cast<float>(k) / (nailRings - 1)));
+            const float tProx = 0.35f, tDist = 0.2f;  // rounded cuticle, flatter free edge
+            float outline = 1.0f;
+            if (t < tProx) outline = std::sqrt(1.0f - std::pow((tProx - t) / tProx, 2.0f));
+            if (t > 1.0f - tDist) outline = std::sqrt(1.0f - std::pow((t - (1.0f - tDist)) / tDist, 2.0f));
+            const float sd = nailStart + t * (nailEnd - nailStart);
+            const float w = halfWidth * outline;
+            const float thick = halfThick * std::sqrt(outline);
+            const float sink = 0.1f + 0.25f * (1.0f - smoothstep(0.0f, 0.3f, t));  // deeper at the cuticle
+            Ring ring;
+            ring.exponent = 2.5f;  // a flatter top than an ellipse: a plate
+            ring.ru = ring.rv = 1.0f;  // unit ring, shaped by adjust
+            ring.weights = Weights(bones.body[first + 2]);
+            ring.adjust = [=, &toWorld, &sectionRadius, &joint, &rot](glm::vec3& p, Weights&, float, float) {
+                // Unit ring: p.x across the thickness (+ outward), p.y across the width. y is
+                // negated so the ring order keeps the tube's outward winding.
+                const float y = -w * p.y;
+                const float r = std::max(sectionRadius(sd), 1e-3f);
+                const float yr = std::clamp(y / r, -1.0f, 1.0f);
+                const float surface = 0.88f * r * std::sqrt(1.0f - yr * yr);  // dorsal skin
+                const float x = -(surface - sink + thick * p.x);
+                p = toWorld(joint[2] + rot[2] * glm::vec3(x, y, sd));
+            };
+            nail.push_back(ring);
+        }
+        render::Primitive& nails = mesh.primitive(kNail);
+        const std::size_t nailBase = nails.vertices.size();
+        mesh.tube(kNail, nail, 12, 0.0f, 0.0f);
+        // Poles: the tube puts them at the unbent ring centres; move them to the centroids
+        // of the end rings (the last two vertices: start, end).
+        for (int end = 0; end < 2; ++end) {
+            const std::size_t ringStart = nailBase + (end == 0 ? 0 : static_cast<std::size_t>(nailRings - 1) * 12);
+            glm::vec3 c(0.0f);
+            for (std::size_t j = 0; j < 12; ++j) c += nails.vertices[ringStart + j].position;
+            nails.vertices[nails.vertices.size() - 2 + end].position = c / 12.0f;
+        }
     }
 
     // Palm: slab from inside the sleeve (z = -30 mm) to just past the knuckle arc.
@@ -357,6 +465,7 @@ void buildHand(MeshBuilder& mesh, const hand::HandModel& model, hand::Side side,
         ring.v = glm::vec3(0, 1, 0);
         ring.ru = 1.0f;
         ring.rv = 1.0f;
+        ring.palmTone = true;
         ring.adjust = [=, &toWorld, &knuckleZ, &bones](glm::vec3& p, Weights& w, float, float) {
             const float xUnit = p.x, yUnit = p.y;
             // yUnit runs toward +y in both hands, so the mirrored left palm keeps its winding.
@@ -679,6 +788,7 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
     body.primitives = mesh.finish();
     scene.meshes.push_back(std::move(body));
     scene.materials = avatarMaterials();
+    addSkinToneTexture(scene);
     scene.skins.push_back(std::move(skin));
     render::Node meshNode;
     meshNode.name = "signerMesh";

@@ -66,7 +66,7 @@ TEST(Avatar, SkeletonHasEveryVrmBoneInTheHumanoidHierarchy) {
     EXPECT_EQ(parentName("leftIndexDistal"), "leftIndexIntermediate");
     EXPECT_EQ(parentName("rightThumbMetacarpal"), "rightHand");
     ASSERT_EQ(s.skins.size(), 1u);
-    EXPECT_EQ(s.materials.size(), 6u);
+    EXPECT_EQ(s.materials.size(), 7u);  // skin, top, eye white, iris, hair, lips, nail
     // The posing code accepts it as it is.
     EXPECT_NO_THROW(app::SignerRig rig(s));
 }
@@ -235,4 +235,46 @@ TEST(Avatar, FingerVolumeHoldsAtFullFlexion) {
     // Linear blend skinning squeezes the palmar side of a knuckle bent 90° or more (like the
     // skin crease of a real fist) to ~30 % of its rest thickness; a collapse goes to ~0.
     EXPECT_GT(worst, 0.25f);
+}
+
+TEST(Avatar, EveryDigitHasANailOnTheBackOfItsDistalBoneSkinnedRigidlyToIt) {
+    // Nails make the back of a finger read as the back in a front view. Each lies on the
+    // dorsal side (-x of the bone frame: +x is palmar) of its distal phalanx, moves with it
+    // only, and the skin tone differs palm to back (texture coordinate u: back 0.25, palm 0.75).
+    const render::Scene& s = avatar();
+    const render::Primitive* nails = nullptr;
+    for (const render::Primitive& p : s.meshes[0].primitives)
+        if (p.material >= 0 && s.materials[static_cast<std::size_t>(p.material)].name == "nail") nails = &p;
+    ASSERT_NE(nails, nullptr);
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(s, render::restPose(s), world);
+    std::map<unsigned, int> perBone;
+    for (const render::Vertex& v : nails->vertices) {
+        ASSERT_FLOAT_EQ(v.weights[0], 1.0f);
+        ++perBone[v.joints[0]];
+        const glm::mat4& bone = world[v.joints[0]];
+        const glm::vec3 local = glm::vec3(glm::inverse(bone) * glm::vec4(v.position, 1.0f)) * 1000.0f;  // mm
+        EXPECT_LT(local.x, -3.0f) << s.nodes[v.joints[0]].name;  // dorsal, not inside the finger's axis
+        EXPECT_GT(local.z, 0.0f) << s.nodes[v.joints[0]].name;   // beyond the DIP/IP joint
+    }
+    ASSERT_EQ(perBone.size(), 10u);
+    for (hand::Side side : {hand::Side::Right, hand::Side::Left})
+        for (hand::Body distal : {hand::Body::ThumbDistal, hand::Body::IndexDistal, hand::Body::MiddleDistal,
+                                  hand::Body::RingDistal, hand::Body::LittleDistal}) {
+            const int node = s.findNode(std::string(hand::boneName(side, distal)));
+            EXPECT_GT(perBone[static_cast<unsigned>(node)], 50) << hand::boneName(side, distal);
+        }
+    // Palm and back tones: the palm's centre is palm-toned, the back of the hand back-toned.
+    const render::Primitive& skin = s.meshes[0].primitives[0];
+    ASSERT_EQ(s.materials[0].baseColorTexture, 0);
+    const int rightHand = s.findNode("rightHand");
+    int palmar = 0, dorsal = 0;
+    for (const render::Vertex& v : skin.vertices) {
+        if (v.joints[0] != static_cast<unsigned>(rightHand) || v.weights[0] < 0.99f) continue;
+        const glm::vec3 n = glm::vec3(glm::inverse(world[rightHand]) * glm::vec4(v.normal, 0.0f));
+        if (n.x > 0.9f) { EXPECT_NEAR(v.uv.x, 0.75f, 1e-6f); ++palmar; }
+        if (n.x < -0.9f) { EXPECT_NEAR(v.uv.x, 0.25f, 1e-6f); ++dorsal; }
+    }
+    EXPECT_GT(palmar, 10);
+    EXPECT_GT(dorsal, 10);
 }
