@@ -43,12 +43,8 @@ struct PushConstants {
     std::uint32_t padding[2] = {0, 0};
 };
 
-// Matches `Lighting` in shaders/mesh.frag (std140).
-struct LightingUniform {
-    glm::vec4 key, fill, rim, ambient;
-};
-
-LightingUniform lightingUniform(const Lighting& lighting) {
+// The lighting part of mesh.frag's specialisation constants: directions towards the lights.
+void setLighting(const Lighting& lighting, vk::FragmentConstants& constants) {
     glm::vec3 key = lighting.keyDirection;
     if (glm::length(key) < 1e-6f) key = {-0.3f, -0.5f, -1.0f};
     key = glm::normalize(key);
@@ -57,8 +53,15 @@ LightingUniform lightingUniform(const Lighting& lighting) {
     glm::vec3 fill = glm::normalize(glm::vec3(-key.x * 2.0f + (key.x == 0.0f ? 0.5f : 0.0f),
                                               key.y * 0.2f, key.z));
     glm::vec3 rim = glm::normalize(glm::vec3(-key.x * 0.5f, -0.6f, -key.z));
-    return {glm::vec4(key, lighting.keyIntensity), glm::vec4(fill, lighting.fillIntensity),
-            glm::vec4(rim, lighting.rimIntensity), glm::vec4(lighting.ambient, 0, 0, 0)};
+    for (int c = 0; c < 3; ++c) {
+        constants.toKey[c] = -key[c];
+        constants.toFill[c] = -fill[c];
+        constants.toRim[c] = -rim[c];
+    }
+    constants.keyIntensity = lighting.keyIntensity;
+    constants.fillIntensity = lighting.fillIntensity;
+    constants.rimIntensity = lighting.rimIntensity;
+    constants.ambient = lighting.ambient;
 }
 
 std::string joinCounts(const std::vector<std::uint32_t>& counts) {
@@ -81,7 +84,7 @@ LabelRect cellOf(std::uint32_t width, std::uint32_t height, std::uint32_t column
 
 struct Draw {
     const vk::GpuPrimitive* primitive;
-    std::uint32_t matrixBase, jointCount;
+    std::uint32_t matrixBase, jointCount;  // jointCount 0: rigid
     float distance;
 };
 
@@ -106,8 +109,10 @@ struct Renderer::Impl {
     vk::UniquePipelineLayout pipelineLayout;
     vk::UniqueShaderModule vertexShader, fragmentShader;
     vk::PipelineDesc pipelineDesc;
-    std::map<std::uint32_t, vk::UniquePipeline> pipelines;  // by pipelineKey()
-    vk::Buffer lighting;
+    // One pipeline per distinct (specialisation constants, skinned, double-sided): materials
+    // with equal factors share one, across scenes too.
+    std::map<std::vector<std::uint32_t>, vk::UniquePipeline> pipelines;
+    std::map<std::pair<const vk::GpuMaterial*, bool>, VkPipeline> materialPipelines;  // cache
     vk::UniqueDescriptorPool framePool;
     std::vector<Slot> slots;
     std::deque<std::size_t> pending;
@@ -124,8 +129,7 @@ struct Renderer::Impl {
 
     void checkOptions(const vk::PhysicalDevice& physical);
     void createPipelineLayout(VkFormat colorFormat, VkFormat depthFormat);
-    static std::uint32_t pipelineKey(const vk::GpuMaterial& material);
-    VkPipeline pipelineFor(const vk::GpuMaterial& material);
+    VkPipeline pipelineFor(const vk::GpuMaterial& material, bool skinned);
     void validateFrame(const Frame& frame) const;
     void recordFrame(Slot& slot, const Frame& frame);
     void ensureMatrixCapacity(Slot& slot, std::size_t count);
@@ -165,12 +169,12 @@ void Renderer::Impl::checkOptions(const vk::PhysicalDevice& physical) {
 
 void Renderer::Impl::createPipelineLayout(VkFormat colorFormat, VkFormat depthFormat) {
     VkDevice dev = device->get();
+    // Lighting and material factors are specialisation constants (see mesh.frag), so the
+    // sets hold only the per-frame matrices and the material textures.
     frameLayout = vk::createSetLayout(
-        dev, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-              {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}});
+        dev, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT}});
     materialLayout = vk::createSetLayout(
-        dev, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-              {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        dev, {{1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
               {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}});
     pipelineLayout = vk::createPipelineLayout(
         dev, {frameLayout.get(), materialLayout.get()},
@@ -194,31 +198,36 @@ void Renderer::Impl::createPipelineLayout(VkFormat colorFormat, VkFormat depthFo
     desc.samples = static_cast<VkSampleCountFlagBits>(options.msaa);
 }
 
-// Bits: 0 blend, 1 base colour texture, 2 metallic-roughness texture, 3 alpha mask.
-std::uint32_t Renderer::Impl::pipelineKey(const vk::GpuMaterial& material) {
-    return (material.alphaMode == AlphaMode::Blend ? 1u : 0u) |
-           (material.hasBaseColorTexture ? 2u : 0u) |
-           (material.hasMetallicRoughnessTexture ? 4u : 0u) |
-           (material.alphaMode == AlphaMode::Mask ? 8u : 0u);
-}
-
-VkPipeline Renderer::Impl::pipelineFor(const vk::GpuMaterial& material) {
-    const std::uint32_t key = pipelineKey(material);
+VkPipeline Renderer::Impl::pipelineFor(const vk::GpuMaterial& material, bool skinned) {
+    auto cached = materialPipelines.find({&material, skinned});
+    if (cached != materialPipelines.end()) return cached->second;
+    vk::FragmentConstants constants = material.constants;
+    setLighting(options.lighting, constants);
+    std::vector<std::uint32_t> key(vk::kFragmentConstantCount + 1);
+    std::memcpy(key.data(), &constants, sizeof(constants));
+    key.back() = (skinned ? 1u : 0u) | (material.doubleSided ? 2u : 0u);
     auto found = pipelines.find(key);
-    if (found != pipelines.end()) return found->second.get();
-    // Specialisation constants of shaders/mesh.frag (bools are 32-bit in SPIR-V).
-    const VkBool32 constants[3] = {(key & 2u) ? VK_TRUE : VK_FALSE, (key & 4u) ? VK_TRUE : VK_FALSE,
-                                   (key & 8u) ? VK_TRUE : VK_FALSE};
-    const VkSpecializationMapEntry entries[3] = {{0, 0, sizeof(VkBool32)},
-                                                 {1, sizeof(VkBool32), sizeof(VkBool32)},
-                                                 {2, 2 * sizeof(VkBool32), sizeof(VkBool32)}};
-    const VkSpecializationInfo specialization{3, entries, sizeof(constants), constants};
+    if (found != pipelines.end()) return materialPipelines[{&material, skinned}] = found->second.get();
+
+    std::vector<VkSpecializationMapEntry> entries(vk::kFragmentConstantCount);
+    for (std::uint32_t id = 0; id < vk::kFragmentConstantCount; ++id)
+        entries[id] = {id, id * 4u, 4u};  // bools are 32-bit in SPIR-V, like the floats
+    const VkSpecializationInfo specialization{vk::kFragmentConstantCount, entries.data(),
+                                              sizeof(constants), &constants};
+    const VkBool32 vertexConstant = skinned ? VK_TRUE : VK_FALSE;  // SKINNED in mesh.vert
+    const VkSpecializationMapEntry vertexEntry{0, 0, sizeof(VkBool32)};
+    const VkSpecializationInfo vertexSpecialization{1, &vertexEntry, sizeof(VkBool32),
+                                                    &vertexConstant};
     vk::PipelineDesc desc = pipelineDesc;
+    desc.vertexSpecialization = &vertexSpecialization;
     desc.fragmentSpecialization = &specialization;
-    desc.blend = (key & 1u) != 0;
+    desc.dynamicCullMode = false;
+    desc.cullMode = material.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+    desc.blend = material.alphaMode == AlphaMode::Blend;
     desc.depthWrite = !desc.blend;  // blended surfaces test against, but do not hide, others
     auto pipeline = vk::createGraphicsPipeline(device->get(), pipelineLayout.get(), desc);
-    return pipelines.emplace(key, std::move(pipeline)).first->second.get();
+    VkPipeline handle = pipelines.emplace(std::move(key), std::move(pipeline)).first->second.get();
+    return materialPipelines[{&material, skinned}] = handle;
 }
 
 void Renderer::Impl::ensureMatrixCapacity(Slot& slot, std::size_t count) {
@@ -230,8 +239,6 @@ void Renderer::Impl::ensureMatrixCapacity(Slot& slot, std::size_t count) {
                                      vk::MemoryUse::Upload);
     vk::DescriptorWriter()
         .buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, slot.matrices.buffer.get(), size)
-        .buffer(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, lighting.buffer.get(),
-                sizeof(LightingUniform))
         .update(device->get(), slot.set);
 }
 
@@ -322,8 +329,10 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
         for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
             const Node& node = scene.nodes[n];
             if (node.mesh < 0 || node.mesh >= static_cast<int>(scene.meshes.size())) continue;
+            // Rigid draws: world matrix and its normal matrix (mesh.vert).
             const auto rigidBase = static_cast<std::uint32_t>(matrices.size());
             matrices.push_back(world[n]);
+            matrices.push_back(glm::mat4(glm::transpose(glm::inverse(glm::mat3(world[n])))));
             std::uint32_t skinBase = 0, jointCount = 0;
             if (node.skin >= 0 && node.skin < static_cast<int>(scene.skins.size())) {
                 computeJointMatrices(scene, node.skin, world, joints);
@@ -385,18 +394,20 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
         auto drawRange = [&](const std::vector<Draw>& draws, std::size_t from, std::size_t to) {
             PushConstants push = view.push;
             VkPipeline bound = VK_NULL_HANDLE;
+            VkDescriptorSet boundSet = VK_NULL_HANDLE;
             for (std::size_t i = from; i < to; ++i) {
                 const Draw& draw = draws[i];
                 const vk::GpuMaterial& material = view.scene->material(draw.primitive->material);
-                VkPipeline pipeline = pipelineFor(material);
+                VkPipeline pipeline = pipelineFor(material, draw.jointCount > 0);
                 if (pipeline != bound) {
                     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
                     bound = pipeline;
                 }
-                vkCmdSetCullMode(cmd, material.doubleSided ? VK_CULL_MODE_NONE
-                                                           : VK_CULL_MODE_BACK_BIT);
-                vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                        pipelineLayout.get(), 1, 1, &material.set, 0, nullptr);
+                if (material.set != boundSet) {
+                    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                            pipelineLayout.get(), 1, 1, &material.set, 0, nullptr);
+                    boundSet = material.set;
+                }
                 push.matrixBase = draw.matrixBase;
                 push.jointCount = draw.jointCount;
                 vkCmdPushConstants(cmd, pipelineLayout.get(),
@@ -440,14 +451,9 @@ Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl
     const VkFormat depthFormat = vk::chooseDepthFormat(*r.device);
     r.createPipelineLayout(colorFormat, depthFormat);
 
-    LightingUniform lighting = lightingUniform(options.lighting);
-    r.lighting = vk::createBuffer(*r.device, sizeof(LightingUniform),
-                                  VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload);
-    std::memcpy(r.lighting.mapped, &lighting, sizeof(lighting));
-
     r.framePool = vk::createDescriptorPool(
         r.device->get(), kFramesInFlight,
-        {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}});
+        {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}});
     vk::TargetFormats formats{colorFormat, depthFormat,
                               static_cast<VkSampleCountFlagBits>(options.msaa)};
     r.slots.resize(kFramesInFlight);
@@ -487,8 +493,16 @@ int Renderer::addScene(const Scene& scene) {
     }
     impl_->scenes.push_back(std::make_unique<vk::GpuScene>(*impl_->device, *impl_->commands, scene,
                                                            impl_->materialLayout.get()));
-    // Compile the scene's pipeline variants now rather than on the first frame.
-    for (const auto& material : impl_->scenes.back()->materials()) impl_->pipelineFor(material);
+    // Compile the scene's pipeline variants now rather than on the first frame: every
+    // material rigid, and skinned where a skinned primitive on a skinned node uses it.
+    const vk::GpuScene& gpu = *impl_->scenes.back();
+    for (const auto& material : gpu.materials()) impl_->pipelineFor(material, false);
+    for (const Node& node : scene.nodes) {
+        if (node.mesh < 0 || node.mesh >= static_cast<int>(scene.meshes.size())) continue;
+        if (node.skin < 0 || node.skin >= static_cast<int>(scene.skins.size())) continue;
+        for (const auto& primitive : gpu.primitives(node.mesh))
+            if (primitive.skinned) impl_->pipelineFor(gpu.material(primitive.material), true);
+    }
     return static_cast<int>(impl_->scenes.size() - 1);
 }
 

@@ -34,6 +34,7 @@ UniquePipeline createGraphicsPipeline(VkDevice device, VkPipelineLayout layout,
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
     stages[0].module = desc.vertex;
     stages[0].pName = "main";
+    stages[0].pSpecializationInfo = desc.vertexSpecialization;
     stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].module = desc.fragment;

@@ -1,7 +1,7 @@
 #pragma once
-// Graphics pipelines for dynamic rendering (no render pass objects). Viewport, scissor and
-// cull mode are dynamic so one pipeline serves every view and both single/double-sided
-// materials.
+// Graphics pipelines for dynamic rendering (no render pass objects). Viewport and scissor
+// are dynamic so one pipeline serves every view; cull mode can be (dynamicCullMode) but the
+// renderer bakes it into its pipeline variants.
 #include "renderer/vk_handle.hpp"
 
 #include <cstddef>
@@ -24,6 +24,7 @@ struct PipelineDesc {
     bool blend = false;  // straight alpha "over"
     bool dynamicCullMode = true;
     VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;  // when not dynamic
+    const VkSpecializationInfo* vertexSpecialization = nullptr;
     const VkSpecializationInfo* fragmentSpecialization = nullptr;
 };
 

@@ -138,6 +138,38 @@ UniqueSampler makeSampler(const Device& device, const Texture& texture) {
 
 }  // namespace
 
+FragmentConstants materialConstants(const Material& material, bool baseTexture, bool mrTexture) {
+    FragmentConstants constants;
+    constants.hasBaseColorTexture = baseTexture ? VK_TRUE : VK_FALSE;
+    constants.hasMetallicRoughnessTexture = mrTexture ? VK_TRUE : VK_FALSE;
+    constants.alphaMask = material.alphaMode == AlphaMode::Mask ? VK_TRUE : VK_FALSE;
+    constants.alphaBlend = material.alphaMode == AlphaMode::Blend ? VK_TRUE : VK_FALSE;
+    for (int c = 0; c < 4; ++c) constants.baseColor[c] = material.baseColorFactor[c];
+    for (int c = 0; c < 3; ++c) constants.emissive[c] = material.emissiveFactor[c];
+    constants.metallic = material.metallicFactor;
+    constants.roughness = material.roughnessFactor;
+    constants.alphaCutoff = material.alphaCutoff;
+    // Same formulas and order as the textured path of shaders/mesh.frag.
+    constexpr float kPi = 3.14159265f;
+    const glm::vec3 base(material.baseColorFactor);
+    const float metallic = std::clamp(material.metallicFactor, 0.0f, 1.0f);
+    const float roughness = std::clamp(material.roughnessFactor, 0.04f, 1.0f);
+    const glm::vec3 diffuse = base * (1.0f - metallic);
+    const glm::vec3 f0 = glm::mix(glm::vec3(0.04f), base, metallic);
+    const float alpha = roughness * roughness;
+    const float shininess = std::clamp(2.0f / (alpha * alpha) - 2.0f, 1.0f, 2048.0f);
+    const glm::vec3 diffuseOverPi = diffuse / kPi;
+    const glm::vec3 specular = f0 * ((shininess + 8.0f) / (8.0f * kPi));
+    const glm::vec3 ambientColor = diffuse + f0 * 0.5f;
+    for (int c = 0; c < 3; ++c) {
+        constants.diffuseOverPi[c] = diffuseOverPi[c];
+        constants.specular[c] = specular[c];
+        constants.ambientColor[c] = ambientColor[c];
+    }
+    constants.exponent = shininess * 1.4427f;
+    return constants;
+}
+
 const GpuImage& GpuScene::textureImage(const Device& device, const CommandPool& commands, int index,
                                     bool srgb) {
     auto key = std::make_pair(index, srgb);
@@ -207,7 +239,7 @@ GpuScene::GpuScene(const Device& device, const CommandPool& commands, Scene scen
 
     descriptorPool_ = createDescriptorPool(
         device.get(), static_cast<std::uint32_t>(materials.size()),
-        {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
+        {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}});
     for (std::size_t i = 0; i < materials.size(); ++i) {
         const Material& material = materials[i];
         auto textureOf = [&](int index) -> const Texture* {
@@ -220,14 +252,6 @@ GpuScene::GpuScene(const Device& device, const CommandPool& commands, Scene scen
         const Texture* baseTexture = textureOf(material.baseColorTexture);
         const Texture* mrTexture = textureOf(material.metallicRoughnessTexture);
 
-        MaterialUniform uniform{};
-        uniform.baseColorFactor = material.baseColorFactor;
-        uniform.emissive = glm::vec4(material.emissiveFactor, 0.0f);
-        uniform.parameters = {material.metallicFactor, material.roughnessFactor,
-                              material.alphaCutoff, static_cast<float>(material.alphaMode)};
-        uniform.textureFlags = {baseTexture ? 1.0f : 0.0f, mrTexture ? 1.0f : 0.0f, 0.0f, 0.0f};
-        materialUniforms_.push_back(uploadBuffer(device, commands, &uniform, sizeof(uniform),
-                                                 VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT));
 
         VkImageView baseView = whiteSrgb_.view.get(), mrView = whiteLinear_.view.get();
         VkSampler baseSampler = defaultSampler_.get(), mrSampler = defaultSampler_.get();
@@ -244,10 +268,9 @@ GpuScene::GpuScene(const Device& device, const CommandPool& commands, Scene scen
         gpu.doubleSided = material.doubleSided;
         gpu.hasBaseColorTexture = baseTexture != nullptr;
         gpu.hasMetallicRoughnessTexture = mrTexture != nullptr;
+        gpu.constants = materialConstants(material, baseTexture != nullptr, mrTexture != nullptr);
         gpu.set = allocateSet(device.get(), descriptorPool_.get(), materialLayout);
         DescriptorWriter()
-            .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, materialUniforms_.back().buffer.get(),
-                    sizeof(MaterialUniform))
             .image(1, baseView, baseSampler)
             .image(2, mrView, mrSampler)
             .update(device.get(), gpu.set);

@@ -1,7 +1,7 @@
 #pragma once
 // GPU copy of a render::Scene: one vertex and one index buffer for all primitives, textures
 // (sRGB base colour, linear metallic-roughness) with mipmaps, samplers from the glTF
-// settings, and one descriptor set per material. The CPU scene is kept for posing.
+// settings, one descriptor set per material (its textures) and its specialisation constants. The CPU scene is kept for posing.
 #include "renderer/scene.hpp"
 #include "renderer/vk_commands.hpp"
 #include "renderer/vk_memory.hpp"
@@ -12,13 +12,30 @@
 
 namespace signstim::render::vk {
 
-// std140 layout of the material uniform block (set 1, binding 0) in shaders/mesh.frag.
-struct MaterialUniform {
-    glm::vec4 baseColorFactor;
-    glm::vec4 emissive;     // xyz
-    glm::vec4 parameters;   // metallic, roughness, alpha cutoff, alpha mode (0/1/2)
-    glm::vec4 textureFlags; // x: has base colour texture, y: has metallic-roughness texture
+// Specialisation constants of shaders/mesh.frag: ids 0..36, 4 bytes each, in this order.
+// The material part comes from materialConstants(); the Renderer fills in the lighting.
+struct FragmentConstants {
+    VkBool32 hasBaseColorTexture = VK_FALSE, hasMetallicRoughnessTexture = VK_FALSE;  // 0, 1
+    VkBool32 alphaMask = VK_FALSE, alphaBlend = VK_FALSE;                             // 2, 3
+    float baseColor[4] = {1, 1, 1, 1};                // 4-7
+    float emissive[3] = {0, 0, 0};                    // 8-10
+    float metallic = 1, roughness = 1, alphaCutoff = 0.5f;  // 11-13
+    // Derived from the factors (used for untextured materials):
+    float diffuseOverPi[3] = {0, 0, 0};               // 14-16 base * (1 - metallic) / pi
+    float specular[3] = {0, 0, 0};                    // 17-19 f0 * (shininess + 8) / (8 pi)
+    float exponent = 1;                               // 20    shininess * log2(e)
+    float ambientColor[3] = {0, 0, 0};                // 21-23 diffuse + f0 / 2
+    // Lighting (directions towards the lights, unit length):
+    float toKey[3] = {0, 0, 1}, keyIntensity = 1;     // 24-27
+    float toFill[3] = {0, 0, 1}, fillIntensity = 0;   // 28-31
+    float toRim[3] = {0, 0, 1}, rimIntensity = 0;     // 32-35
+    float ambient = 0;                                // 36
 };
+static_assert(sizeof(FragmentConstants) == 37 * 4, "one 4-byte word per constant id");
+constexpr std::uint32_t kFragmentConstantCount = 37;
+
+// The material part of FragmentConstants (ids 0..23).
+FragmentConstants materialConstants(const Material& material, bool baseTexture, bool mrTexture);
 
 struct GpuPrimitive {
     std::uint32_t firstIndex = 0, indexCount = 0;
@@ -31,7 +48,8 @@ struct GpuMaterial {
     AlphaMode alphaMode = AlphaMode::Opaque;
     bool doubleSided = false;
     bool hasBaseColorTexture = false, hasMetallicRoughnessTexture = false;
-    VkDescriptorSet set = VK_NULL_HANDLE;
+    FragmentConstants constants;  // material part; lighting left at its defaults
+    VkDescriptorSet set = VK_NULL_HANDLE;  // textures (set 1, bindings 1 and 2)
 };
 
 class GpuScene {
@@ -61,7 +79,6 @@ private:
     std::vector<UniqueSampler> samplers_;
     GpuImage whiteSrgb_, whiteLinear_;
     UniqueSampler defaultSampler_;
-    std::vector<Buffer> materialUniforms_;
     UniqueDescriptorPool descriptorPool_;
     std::vector<GpuMaterial> materials_;
     std::size_t triangles_ = 0;

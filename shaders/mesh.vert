@@ -1,7 +1,11 @@
 #version 450
 // Posed mesh: rigid (one world matrix) or skinned (GPU linear-blend skinning: four joint
 // matrices world[joint] * inverseBind, weighted). All matrices of a frame live in one
-// storage buffer; the push constants say where this draw's start.
+// storage buffer; the push constants say where this draw's start. Rigid and skinned draws
+// are separate pipelines (specialisation constant SKINNED): on CPU devices (lavapipe) a
+// uniform branch still costs both sides, and the rigid side is the common one.
+
+layout(constant_id = 0) const bool SKINNED = false;
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -9,6 +13,8 @@ layout(location = 2) in vec2 inUv;
 layout(location = 3) in uvec4 inJoints;
 layout(location = 4) in vec4 inWeights;
 
+// Rigid draws: matrices[matrixBase] is the world matrix and matrices[matrixBase + 1] its
+// normal matrix (transpose of the inverse, upper 3x3), computed once per node on the CPU.
 layout(std430, set = 0, binding = 0) readonly buffer Matrices { mat4 matrices[]; };
 
 layout(push_constant) uniform Push {
@@ -18,23 +24,26 @@ layout(push_constant) uniform Push {
     uint jointCount;  // 0: rigid draw
 } pc;
 
-layout(location = 0) out vec3 outWorldPosition;
+// The fragment shader needs the direction to the camera; camera - world is linear in the
+// world position, so interpolating it equals interpolating the position and subtracting.
+layout(location = 0) out vec3 outToCamera;
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec2 outUv;
 
 mat4 jointMatrix(uint joint) { return matrices[pc.matrixBase + min(joint, pc.jointCount - 1u)]; }
 
 void main() {
-    mat4 model;
-    if (pc.jointCount == 0u) {
-        model = matrices[pc.matrixBase];
+    vec4 world;
+    if (SKINNED) {
+        mat4 model = inWeights.x * jointMatrix(inJoints.x) + inWeights.y * jointMatrix(inJoints.y) +
+                     inWeights.z * jointMatrix(inJoints.z) + inWeights.w * jointMatrix(inJoints.w);
+        world = model * vec4(inPosition, 1.0);
+        outNormal = transpose(inverse(mat3(model))) * inNormal;
     } else {
-        model = inWeights.x * jointMatrix(inJoints.x) + inWeights.y * jointMatrix(inJoints.y) +
-                inWeights.z * jointMatrix(inJoints.z) + inWeights.w * jointMatrix(inJoints.w);
+        world = matrices[pc.matrixBase] * vec4(inPosition, 1.0);
+        outNormal = mat3(matrices[pc.matrixBase + 1u]) * inNormal;
     }
-    vec4 world = model * vec4(inPosition, 1.0);
-    outWorldPosition = world.xyz;
-    outNormal = transpose(inverse(mat3(model))) * inNormal;
+    outToCamera = pc.cameraPosition.xyz - world.xyz;
     outUv = inUv;
     gl_Position = pc.viewProjection * world;
 }
