@@ -3,8 +3,10 @@
 // bench render: frames per second of the Renderer (render + readback, pipelined with
 // framesInFlight() frames) beside a raw baseline — a minimal draw-and-readback loop written
 // directly against Vulkan on the same device and mesh (renderer/vk_raw_baseline.hpp) — so
-// the renderer's overhead is a ratio from one run. With a frame sink (+PNG sequence, +MP4)
-// the figure is end to end, sink finish included.
+// the renderer's overhead is a ratio from one run; CPU time per frame beside each figure
+// (on a CPU device such as lavapipe it is the work, and it is less sensitive than wall time
+// to other load). With frame sinks (PNG sequence, MP4) a second table gives each stage
+// alone and end to end, beside the slower stage, the serial sum and the shared-CPU bound.
 #include "app/commands.hpp"
 #include "common/error.hpp"
 #include "renderer/frame_sink.hpp"
@@ -12,6 +14,7 @@
 #include "renderer/renderer.hpp"
 #include "renderer/vk_raw_baseline.hpp"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -20,6 +23,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -60,12 +64,14 @@ struct BenchSettings {
 };
 
 // The mesh framed as the raw baseline frames it (sphere of radius 0.5 at the origin).
-render::Frame benchFrame(int handle) {
+// `shift` moves camera and target sideways (the sink measurements vary their frames so the
+// MP4 encoder sees motion, as it would in a real clip; rendering cost is unchanged).
+render::Frame benchFrame(int handle, float shift = 0.0f) {
     render::Frame frame;
     render::View view;
     view.scene = handle;
-    view.camera.eye = {0.0f, 0.0f, 2.2f};
-    view.camera.target = {0.0f, 0.0f, 0.0f};
+    view.camera.eye = {shift, 0.0f, 2.2f};
+    view.camera.target = {shift, 0.0f, 0.0f};
     view.camera.verticalFovDegrees = 30.0f;
     view.camera.nearPlane = 0.1f;
     view.camera.farPlane = 10.0f;
@@ -73,39 +79,105 @@ render::Frame benchFrame(int handle) {
     return frame;
 }
 
-double seconds(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+float sinkShift(std::uint32_t index) { return 0.01f * static_cast<float>(index % 30) - 0.15f; }
+
+// Wall-clock frames per second and CPU milliseconds per frame (this process and its reaped
+// children, i.e. ffmpeg once the MP4 sink has finished; all threads, so up to cores x wall).
+struct Figure {
+    double fps = 0;
+    double cpuMs = 0;
+};
+
+double cpuSeconds() {
+    double total = 0;
+    for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+        rusage usage{};
+        getrusage(who, &usage);
+        total += double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                 1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+    }
+    return total;
+}
+
+template <typename Work>
+Figure measure(std::uint32_t frames, Work&& work) {
+    const double cpu0 = cpuSeconds();
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu = cpuSeconds() - cpu0;
+    return {wall > 0 ? frames / wall : 0.0, 1000.0 * cpu / frames};
+}
+
+// Keeps the best (highest fps, lowest CPU) of interleaved rounds: other load on the machine
+// hits every variant alike and only ever slows it down.
+void keepBest(Figure& best, const Figure& round) {
+    best.fps = std::max(best.fps, round.fps);
+    best.cpuMs = best.cpuMs == 0 ? round.cpuMs : std::min(best.cpuMs, round.cpuMs);
 }
 
 // Synchronous: render() one frame at a time.
-double measureSynchronous(render::Renderer& renderer, const render::Frame& frame,
+Figure measureSynchronous(render::Renderer& renderer, const render::Frame& frame,
                           std::uint32_t frames) {
     render::Image image;
     renderer.render(frame, image);  // warm-up
-    const auto start = std::chrono::steady_clock::now();
-    for (std::uint32_t i = 0; i < frames; ++i) renderer.render(frame, image);
-    return frames / seconds(start);
+    return measure(frames, [&] {
+        for (std::uint32_t i = 0; i < frames; ++i) renderer.render(frame, image);
+    });
 }
 
-// Pipelined: keep framesInFlight() frames submitted; each retrieved frame goes to `sink`.
-double measurePipelined(render::Renderer& renderer, const render::Frame& frame,
+// Pipelined: keep framesInFlight() frames submitted. Without a sink every frame is read
+// back into one reused Image (as the raw loop reuses its host buffer); with one, each frame
+// goes to the sink and is read back into a buffer the sink has finished with, when it has
+// one (FrameSink::recycle).
+Figure measurePipelined(render::Renderer& renderer, const std::vector<render::Frame>& sequence,
                         std::uint32_t frames, render::FrameSink* sink) {
-    render::Image warmup;
-    renderer.render(frame, warmup);
-    const auto start = std::chrono::steady_clock::now();
-    std::uint32_t submitted = 0, retrieved = 0;
-    render::Image image;  // reused when there is no sink (as the raw loop reuses its buffer)
-    while (retrieved < frames) {
-        while (submitted < frames && renderer.framesPending() < renderer.framesInFlight()) {
-            renderer.submit(frame);
-            ++submitted;
+    render::Image image;
+    renderer.render(sequence[0], image);  // warm-up
+    return measure(frames, [&] {
+        std::uint32_t submitted = 0, retrieved = 0;
+        while (retrieved < frames) {
+            while (submitted < frames && renderer.framesPending() < renderer.framesInFlight()) {
+                renderer.submit(sequence[submitted % sequence.size()]);
+                ++submitted;
+            }
+            if (sink) sink->recycle(image);
+            renderer.retrieve(image);
+            ++retrieved;
+            if (sink) sink->push(std::exchange(image, render::Image{}));
         }
-        renderer.retrieve(image);
-        ++retrieved;
-        if (sink) sink->push(std::exchange(image, render::Image{}));
-    }
-    if (sink) sink->finish();
-    return frames / seconds(start);
+        if (sink) sink->finish();
+    });
+}
+
+// The sink alone: `frames` already rendered images pushed as fast as it takes them.
+Figure measureSinkAlone(render::FrameSink& sink, std::vector<render::Image> images) {
+    const auto frames = static_cast<std::uint32_t>(images.size());
+    return measure(frames, [&] {
+        for (auto& image : images) sink.push(std::move(image));
+        sink.finish();
+    });
+}
+
+struct SinkFigures {
+    Figure alone, endToEnd;
+    bool available = false;
+};
+
+// Overlap judged on a shared CPU: "min" is the slower stage's rate (perfect overlap, free
+// cores), "sum" the rate if the stages ran one after the other, "cpu" the rate at which the
+// cores could do both stages' CPU work (the bound when, as with lavapipe, rendering and
+// encoding compete for the same cores).
+std::string sinkColumns(const Figure& render, const SinkFigures& sink, unsigned cores) {
+    if (!sink.available) return "   n/a |   n/a |   n/a |   n/a |   n/a |";
+    const double slowest = std::min(render.fps, sink.alone.fps);
+    const double serial = 1.0 / (1.0 / render.fps + 1.0 / sink.alone.fps);
+    const double cpuBound = cores * 1000.0 / (render.cpuMs + sink.alone.cpuMs);
+    char text[96];
+    std::snprintf(text, sizeof text, " %5.0f | %5.0f | %5.0f | %5.0f | %5.0f |", sink.alone.fps,
+                  sink.endToEnd.fps, slowest, serial, cpuBound);
+    return text;
 }
 
 void runRenderBench(const BenchSettings& settings) {
@@ -122,15 +194,16 @@ void runRenderBench(const BenchSettings& settings) {
         frames = std::min<std::uint32_t>(frames, 20);
     }
     if (frames == 0) throw InputError("<command line>", 0, "--frames", "must be at least 1");
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
 
     {
         render::RendererOptions probe;
         probe.device = settings.device;
         probe.width = probe.height = 16;
         render::Renderer renderer(probe);  // selects (or refuses) the device once
-        std::printf("device: %s (%s, %s), %u frames per measurement, %u in flight\n",
+        std::printf("device: %s (%s, %s), %u frames per measurement, %u in flight, %u cores\n",
                     renderer.device().name.c_str(), renderer.device().type.c_str(),
-                    renderer.device().driver.c_str(), frames, renderer.framesInFlight());
+                    renderer.device().driver.c_str(), frames, renderer.framesInFlight(), cores);
         for (std::uint32_t msaa : std::vector<std::uint32_t>(msaaCounts)) {
             const auto& counts = renderer.device().sampleCounts;
             if (std::find(counts.begin(), counts.end(), msaa) == counts.end())
@@ -139,11 +212,13 @@ void runRenderBench(const BenchSettings& settings) {
     }
     const auto scratch = std::filesystem::temp_directory_path() /
                          ("signstim-bench-" + std::to_string(::getpid()));
-    std::printf("fps = frames per second, best of %u interleaved rounds; ratio = renderer "
-                "(pipelined) / raw; +PNG/+MP4 end to end (sink on its own threads)\n\n",
-                settings.rounds);
-    std::printf("| size      | MSAA | triangles | raw   | renderer sync | renderer pipelined | ratio | +PNG  | +MP4  |\n");
-    std::printf("|-----------|------|-----------|-------|---------------|--------------------|-------|-------|-------|\n");
+    std::printf(
+        "fps = frames per second (best of %u interleaved rounds); cpu = CPU ms per frame, all "
+        "threads (lowest of the rounds); ratio = renderer pipelined / raw\n\n",
+        settings.rounds);
+    std::printf("| size      | MSAA | triangles | raw fps | renderer sync | renderer pipelined | ratio | raw cpu | renderer cpu | cpu ratio |\n");
+    std::printf("|-----------|------|-----------|---------|---------------|--------------------|-------|---------|--------------|-----------|\n");
+    std::vector<std::string> sinkRows;
     for (const Size& size : sizes) {
         for (std::uint32_t msaa : msaaCounts) {
             for (std::uint32_t triangles : triangleCounts) {
@@ -162,39 +237,74 @@ void runRenderBench(const BenchSettings& settings) {
                 options.msaa = msaa;
                 render::Renderer renderer(options);
                 const int handle = renderer.addScene(mesh);
-                const render::Frame frame = benchFrame(handle);
-                // Interleaved rounds, best of each: other load on the machine hits both alike.
-                double rawFps = 0, syncFps = 0, pipelinedFps = 0;
+                const std::vector<render::Frame> still = {benchFrame(handle)};
+                Figure rawBest, syncBest, pipelinedBest;
+                baseline.run(1);  // warm-up
                 for (std::uint32_t round = 0; round < settings.rounds; ++round) {
-                    rawFps = std::max(rawFps, baseline.measure(frames));
-                    syncFps = std::max(syncFps, measureSynchronous(renderer, frame, frames));
-                    pipelinedFps = std::max(pipelinedFps, measurePipelined(renderer, frame, frames, nullptr));
+                    keepBest(rawBest, measure(frames, [&] { baseline.run(frames); }));
+                    keepBest(syncBest, measureSynchronous(renderer, still[0], frames));
+                    keepBest(pipelinedBest, measurePipelined(renderer, still, frames, nullptr));
                 }
-                std::string png = "-", mp4 = "-";
-                if (settings.sinks) {
-                    std::filesystem::create_directories(scratch);
-                    auto pngSink = render::makePngSequenceSink(scratch / "png");
-                    png = std::to_string(
-                        static_cast<int>(measurePipelined(renderer, frame, frames, pngSink.get()) + 0.5));
-                    try {
-                        auto videoSink = render::makeVideoSink(scratch / "bench.mp4");
-                        mp4 = std::to_string(static_cast<int>(
-                            measurePipelined(renderer, frame, frames, videoSink.get()) + 0.5));
-                    } catch (const EnvironmentError& error) {
-                        mp4 = "n/a";  // no ffmpeg
-                        std::fprintf(stderr, "signstim: +MP4 skipped: %s\n", error.what());
-                    }
-                    std::filesystem::remove_all(scratch);
-                }
-                std::printf("| %4ux%-4u | %ux   | %9u | %5.0f | %13.0f | %18.0f | %4.2fx | %5s | %5s |\n",
-                            size.width, size.height, msaa,
-                            static_cast<unsigned>(mesh.meshes[0].primitives[0].indices.size() / 3),
-                            rawFps, syncFps, pipelinedFps, pipelinedFps / rawFps, png.c_str(),
-                            mp4.c_str());
+                const auto shown = static_cast<unsigned>(mesh.meshes[0].primitives[0].indices.size() / 3);
+                std::printf("| %4ux%-4u | %ux   | %9u | %7.0f | %13.0f | %18.0f | %4.2fx | %7.2f | %12.2f | %8.2fx |\n",
+                            size.width, size.height, msaa, shown, rawBest.fps, syncBest.fps,
+                            pipelinedBest.fps, pipelinedBest.fps / rawBest.fps, rawBest.cpuMs,
+                            pipelinedBest.cpuMs, rawBest.cpuMs / pipelinedBest.cpuMs);
                 std::fflush(stdout);
+                if (!settings.sinks) continue;
+
+                // Sinks: render alone (into a sink that drops frames), each encoder alone
+                // (on frames rendered beforehand), then both overlapped.
+                std::vector<render::Frame> moving;
+                std::vector<render::Image> rendered(frames);
+                for (std::uint32_t i = 0; i < frames; ++i) {
+                    moving.push_back(benchFrame(handle, sinkShift(i)));
+                    renderer.render(moving.back(), rendered[i]);
+                }
+                auto discard = render::makeDiscardSink();
+                const Figure renderAlone = measurePipelined(renderer, moving, frames, discard.get());
+                std::filesystem::create_directories(scratch);
+                SinkFigures png, mp4;
+                {
+                    auto sink = render::makePngSequenceSink(scratch / "png-alone");
+                    png.alone = measureSinkAlone(*sink, rendered);
+                    sink = render::makePngSequenceSink(scratch / "png");
+                    png.endToEnd = measurePipelined(renderer, moving, frames, sink.get());
+                    png.available = true;
+                }
+                try {
+                    auto sink = render::makeVideoSink(scratch / "alone.mp4");
+                    mp4.alone = measureSinkAlone(*sink, rendered);
+                    sink = render::makeVideoSink(scratch / "bench.mp4");
+                    mp4.endToEnd = measurePipelined(renderer, moving, frames, sink.get());
+                    mp4.available = true;
+                } catch (const EnvironmentError& error) {
+                    std::fprintf(stderr, "signstim: +MP4 skipped: %s\n", error.what());
+                }
+                std::filesystem::remove_all(scratch);
+                char head[96];
+                std::snprintf(head, sizeof head, "| %4ux%-4u | %ux   | %9u | %6.0f | %6.2f |",
+                              size.width, size.height, msaa, shown, renderAlone.fps,
+                              renderAlone.cpuMs);
+                char cpu[64];
+                std::snprintf(cpu, sizeof cpu, " %6.2f | %6.2f |", png.alone.cpuMs,
+                              mp4.available ? mp4.alone.cpuMs : 0.0);
+                sinkRows.push_back(std::string(head) + sinkColumns(renderAlone, png, cores) +
+                                   sinkColumns(renderAlone, mp4, cores) + cpu);
             }
         }
     }
+    if (sinkRows.empty()) return;
+    std::printf(
+        "\nSinks (frames move sideways so the encoder sees motion). render = pipelined into a "
+        "sink that drops frames; alone = the encoder on frames rendered beforehand; e2e = "
+        "both overlapped, finish included; min = the slower stage (perfect overlap on free "
+        "cores); sum = the stages one after the other; cpu = %u cores / (render + encoder CPU "
+        "ms), the bound when both share the cores\n\n",
+        cores);
+    std::printf("| size      | MSAA | triangles | render | r. cpu | PNG alone | +PNG e2e | min | sum | cpu | MP4 alone | +MP4 e2e | min | sum | cpu | PNG cpu | MP4 cpu |\n");
+    std::printf("|-----------|------|-----------|--------|--------|-------|-------|-------|-------|-------|-------|-------|-------|-------|-------|--------|--------|\n");
+    for (const auto& row : sinkRows) std::printf("%s\n", row.c_str());
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <vector>
 
 namespace signstim::render {
 namespace fs = std::filesystem;
@@ -83,6 +84,28 @@ private:
     bool closed_ = false;
 };
 
+// Buffers of written frames, kept for FrameSink::recycle (at most `limit`).
+class SparePool {
+public:
+    explicit SparePool(std::size_t limit) : limit_(limit) {}
+    void give(Image&& image) {
+        std::lock_guard lock(mutex_);
+        if (spares_.size() < limit_) spares_.push_back(std::move(image));
+    }
+    bool take(Image& out) {
+        std::lock_guard lock(mutex_);
+        if (spares_.empty()) return false;
+        out = std::move(spares_.back());
+        spares_.pop_back();
+        return true;
+    }
+
+private:
+    std::size_t limit_;
+    std::mutex mutex_;
+    std::vector<Image> spares_;
+};
+
 class ImageFileSink final : public FrameSink {
 public:
     ImageFileSink(fs::path file, ImageWriteOptions options) : file_(std::move(file)), options_(options) {}
@@ -112,7 +135,7 @@ class PngSequenceSink final : public FrameSink {
 public:
     PngSequenceSink(fs::path directory, ImageWriteOptions options, unsigned threads)
         : directory_(std::move(directory)), options_(options),
-          queue_(2 * std::max(1u, threads)) {
+          queue_(2 * std::max(1u, threads)), spares_(2 * std::max(1u, threads) + 2) {
         ensureWritableDirectory(directory_);
         for (unsigned t = 0; t < std::max(1u, threads); ++t) workers_.emplace_back([this] { run(); });
     }
@@ -129,6 +152,7 @@ public:
         queue_.rethrow();
     }
     std::uint64_t framesPushed() const override { return pushed_; }
+    bool recycle(Image& out) override { return spares_.take(out); }
 
 private:
     struct Job {
@@ -139,6 +163,7 @@ private:
         while (auto job = queue_.pop()) {
             try {
                 writeImage(job->image, directory_ / sequenceFrameName(job->number), options_);
+                spares_.give(std::move(job->image));
             } catch (...) {
                 queue_.fail(std::current_exception());
             }
@@ -151,6 +176,7 @@ private:
     fs::path directory_;
     ImageWriteOptions options_;
     WorkQueue<Job> queue_;
+    SparePool spares_;
     std::vector<std::thread> workers_;
     std::uint64_t pushed_ = 0;
 };
@@ -158,7 +184,8 @@ private:
 class VideoSink final : public FrameSink {
 public:
     VideoSink(fs::path file, VideoOptions options, unsigned queueFrames)
-        : file_(std::move(file)), options_(std::move(options)), queue_(queueFrames) {
+        : file_(std::move(file)), options_(std::move(options)), queue_(queueFrames),
+          spares_(std::max(1u, queueFrames) + 2) {
         ensureWritableDirectory(file_.parent_path());
     }
     ~VideoSink() override {
@@ -183,12 +210,14 @@ public:
         encoder_->finish();
     }
     std::uint64_t framesPushed() const override { return pushed_; }
+    bool recycle(Image& out) override { return spares_.take(out); }
 
 private:
     void run() {
         while (auto frame = queue_.pop()) {
             try {
                 encoder_->write(*frame);
+                spares_.give(std::move(*frame));
             } catch (...) {
                 queue_.fail(std::current_exception());
             }
@@ -197,6 +226,7 @@ private:
     fs::path file_;
     VideoOptions options_;
     WorkQueue<Image> queue_;
+    SparePool spares_;
     std::unique_ptr<VideoEncoder> encoder_;
     std::thread worker_;
     std::uint64_t pushed_ = 0;
@@ -204,12 +234,22 @@ private:
 
 class DiscardSink final : public FrameSink {
 public:
-    void push(Image&&) override { ++pushed_; }
+    void push(Image&& frame) override {
+        ++pushed_;
+        spare_ = std::move(frame);
+    }
     void finish() override {}
     std::uint64_t framesPushed() const override { return pushed_; }
+    bool recycle(Image& out) override {
+        if (spare_.bytes.empty()) return false;
+        out = std::move(spare_);
+        spare_ = Image{};
+        return true;
+    }
 
 private:
     std::uint64_t pushed_ = 0;
+    Image spare_;
 };
 
 }  // namespace

@@ -21,6 +21,13 @@ public:
     // Waits for every pushed frame to be written; throws the first error.
     virtual void finish() = 0;
     virtual std::uint64_t framesPushed() const = 0;
+    // Hands back the buffer of a frame the sink has finished with, so the producer can read
+    // the next frame into it instead of allocating (a fresh multi-megabyte buffer costs page
+    // faults and zero-filling every frame). False when none is free; `out` is then untouched.
+    virtual bool recycle(Image& out) {
+        (void)out;
+        return false;
+    }
 };
 
 // Exactly one frame into `file` (.png/.exr/.tif). A second push throws InputError.

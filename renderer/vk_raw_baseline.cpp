@@ -82,6 +82,10 @@ struct RawBaseline::Impl {
 
 RawBaseline::~RawBaseline() = default;
 
+void RawBaseline::run(std::uint32_t frames) {
+    for (std::uint32_t i = 0; i < frames; ++i) impl_->frame();
+}
+
 double RawBaseline::measure(std::uint32_t frames) {
     impl_->frame();  // warm-up
     const auto start = std::chrono::steady_clock::now();

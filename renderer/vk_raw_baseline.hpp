@@ -26,6 +26,8 @@ public:
     RawBaseline(const RawBaseline&) = delete;
     RawBaseline& operator=(const RawBaseline&) = delete;
 
+    // Draws and reads back `frames` frames, one at a time (for callers that time it).
+    void run(std::uint32_t frames);
     // Frames per second over `frames` frames (after one warm-up frame).
     double measure(std::uint32_t frames);
     // Sum of the bytes of the last frame read back (keeps the copy observable).
