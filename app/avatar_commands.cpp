@@ -61,13 +61,7 @@ glm::quat signingSpaceRotation(const glm::vec3& rotationVectorDeg) {
 void renderToFile(const render::Scene& scene, const std::function<render::Frame(int)>& makeFrame,
                   std::uint32_t width, std::uint32_t height, const std::string& device, std::uint32_t msaa,
                   const std::string& out) {
-    render::RendererOptions options;
-    options.width = width;
-    options.height = height;
-    options.device = device;
-    options.msaa = msaa;
-    options.background = kSignerBackground;
-    render::Renderer renderer(options);
+    render::Renderer renderer(signerRendererOptions(width, height, msaa, device));
     const int handle = renderer.addScene(scene);
     render::Image image;
     renderer.render(makeFrame(handle), image);

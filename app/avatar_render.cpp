@@ -6,6 +6,17 @@
 
 namespace signstim::app {
 
+render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
+                                              const std::string& device) {
+    render::RendererOptions options;
+    options.width = width;
+    options.height = height;
+    options.msaa = msaa;
+    options.device = device;
+    options.background = kSignerBackground;
+    return options;
+}
+
 render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect) {
     render::Camera camera;
     camera.verticalFovDegrees = 30.0f;

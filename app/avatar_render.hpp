@@ -15,6 +15,10 @@ namespace signstim::app {
 // stand out against (linear RGB of sRGB ≈ (0.55, 0.62, 0.68)).
 inline constexpr glm::vec4 kSignerBackground{0.26f, 0.34f, 0.42f, 1.0f};
 
+// Renderer options for the signer: the background above, size, multisampling, device.
+render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
+                                              const std::string& device);
+
 // Waist-up view of a signer whose chest is at `chestWorld` (metres), for aspect w/h.
 render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect);
 

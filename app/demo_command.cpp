@@ -2,6 +2,7 @@
 // demonstration the project can render: the handshape gallery, and every indicating verb in
 // its four versions side by side (SPEC §4.3 layout), with a manifest listing every file.
 #include "app/avatar_render.hpp"
+#include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "app/signer_pose.hpp"
 #include "app/verb_render.hpp"
@@ -50,18 +51,6 @@ const std::vector<stimuli::VerbVersion> kVersions = {stimuli::VerbVersion::Point
                                                      stimuli::VerbVersion::Animator,
                                                      stimuli::VerbVersion::Uninflected};
 
-void parsePanelSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
-    unsigned w = 0, h = 0;
-    char x = 0;
-    std::istringstream in(text);
-    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w < 64 || h < 64 || w > 4096 || h > 4096 ||
-        w % 2 || h % 2)
-        throw InputError("<command line>", 0, "--panel-size",
-                         "expected even WxH between 64 and 4096 (e.g. 480x360), got '" + text + "'");
-    width = w;
-    height = h;
-}
-
 // "0.9" / "-0.6": positions as written in file names (SPEC §5 key-value names).
 std::string positionText(double p) {
     std::ostringstream s;
@@ -83,8 +72,8 @@ nlohmann::json fileEntry(const fs::path& root, const fs::path& file, const std::
 }
 
 void runDemo(const DemoOptions& o) {
-    std::uint32_t panelWidth = 0, panelHeight = 0;
-    parsePanelSize(o.panelSize, panelWidth, panelHeight);
+    const ImageSize panel = parseImageSize(o.panelSize, "--panel-size", {64, 4096, true});
+    const std::uint32_t panelWidth = panel.width, panelHeight = panel.height;
     stimuli::checkArcPosition(o.subject, "<command line>", "--subject");
     stimuli::checkArcPosition(o.object, "<command line>", "--object");
     const render::FrameRate frameRate = render::parseFrameRate(o.fps);

@@ -1,5 +1,7 @@
 // `signstim train`, `signstim verb`, `signstim evaluate`, `signstim reference-corpus`:
 // the indicating verbs of SPEC §3 (Huenerfauth, Lu & Kacorri 2015).
+#include "app/avatar_render.hpp"
+#include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "app/verb_render.hpp"
 #include "common/atomic_file.hpp"
@@ -77,20 +79,10 @@ void printSummary(const VerbPerformance& p) {
     std::printf("(--json prints the keyframes as JSON, the animator file format)\n");
 }
 
-void parseImageSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
-    unsigned w = 0, h = 0;
-    char x = 0;
-    std::istringstream in(text);
-    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || !in.eof() || w < 16 || h < 16 || w > 8192 || h > 8192)
-        throw InputError("<command line>", 0, "--size", "expected WxH between 16 and 8192, got '" + text + "'");
-    width = w;
-    height = h;
-}
-
 // verb --out: the signer performs the verb (lead-in from rest, the verb, a hold).
 void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, const VerbPerformance& performance) {
-    std::uint32_t width = 0, height = 0;
-    parseImageSize(o.size, width, height);
+    const ImageSize size = parseImageSize(o.size, "--size");
+    const std::uint32_t width = size.width, height = size.height;
     const render::FrameRate frameRate = render::parseFrameRate(o.fps);
     const std::filesystem::path out(o.outPath);
     const Signer signer(scenesDir, o.avatarFile);

@@ -54,17 +54,6 @@ Signer::Signer(const std::filesystem::path& scenesDir, const std::filesystem::pa
       rig_(avatar_),
       shapes_(stimuli::loadHandshapes(scenesDir / "handshapes.json", rig_.handModel())) {}
 
-render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
-                                              const std::string& device) {
-    render::RendererOptions options;
-    options.width = width;
-    options.height = height;
-    options.msaa = msaa;
-    options.device = device;
-    options.background = kSignerBackground;
-    return options;
-}
-
 void StillCapturingSink::push(render::Image&& frame) {
     if (count_++ == keep_) still_ = frame;
     next_.push(std::move(frame));

@@ -40,10 +40,6 @@ private:
     stimuli::HandshapeLibrary shapes_;
 };
 
-// Renderer options for the signer: sign-language video practice background.
-render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
-                                              const std::string& device);
-
 // Forwards every frame to `next` and keeps a copy of frame `keep` (0-based): the still of a clip.
 class StillCapturingSink : public render::FrameSink {
 public:

@@ -1,6 +1,7 @@
 // From verb performances to signer frames: the hands go where the verb data say, palms and
 // fingers pointing the way they say, and clips start at rest.
 #include "app/avatar_builder.hpp"
+#include "app/avatar_render.hpp"
 #include "app/signer_pose.hpp"
 #include "app/verb_render.hpp"
 #include "renderer/image_io.hpp"
