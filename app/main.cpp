@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
     try {
         root.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return root.exit(e);
+        // --help and --version exit 0; every usage mistake exits 1 (CLI11's own codes vary).
+        return root.exit(e) == 0 ? 0 : 1;
     } catch (const InputError& e) {
         std::fprintf(stderr, "signstim: error: %s\n", e.what());
         return 2;
