@@ -11,6 +11,8 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <sys/resource.h>
+#include <unistd.h>
 #include <vector>
 
 namespace signstim::render {
@@ -83,6 +85,20 @@ private:
     std::exception_ptr error_;
     bool closed_ = false;
 };
+
+// Encoder threads (and ffmpeg) run this much nicer than the render thread. Where rendering
+// itself runs on the CPU (lavapipe), both compete for the same cores, and at equal priority
+// the encoders preempt the rasterizer threads: measured end to end was then the *sum* of the
+// stages. Niced, the encoders take the cores' idle time (rendering has serial phases: vertex
+// processing and binning, resolve, copy, readback), and the bounded queues still throttle
+// rendering when encoding is the slower stage.
+constexpr int kEncoderNiceness = 10;
+
+void lowerThisThreadPriority() {
+    // Linux: niceness is per thread (setpriority on the thread id). Best effort.
+    (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()),
+                      getpriority(PRIO_PROCESS, static_cast<id_t>(gettid())) + kEncoderNiceness);
+}
 
 // Buffers of written frames, kept for FrameSink::recycle (at most `limit`).
 class SparePool {
@@ -160,6 +176,7 @@ private:
         Image image;
     };
     void run() {
+        lowerThisThreadPriority();
         while (auto job = queue_.pop()) {
             try {
                 writeImage(job->image, directory_ / sequenceFrameName(job->number), options_);
@@ -186,6 +203,7 @@ public:
     VideoSink(fs::path file, VideoOptions options, unsigned queueFrames)
         : file_(std::move(file)), options_(std::move(options)), queue_(queueFrames),
           spares_(std::max(1u, queueFrames) + 2) {
+        if (options_.niceness == 0) options_.niceness = kEncoderNiceness;
         ensureWritableDirectory(file_.parent_path());
     }
     ~VideoSink() override {
@@ -214,6 +232,7 @@ public:
 
 private:
     void run() {
+        lowerThisThreadPriority();
         while (auto frame = queue_.pop()) {
             try {
                 encoder_->write(*frame);

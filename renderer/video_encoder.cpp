@@ -12,6 +12,7 @@
 #include <fstream>
 #include <numeric>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -165,6 +166,10 @@ VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t h
     }
     child_ = pid;
     pipe_ = fds[1];
+    // Best effort (ffmpeg's encoder threads, started later, inherit it); failure is harmless.
+    if (options.niceness > 0)
+        (void)setpriority(PRIO_PROCESS, static_cast<id_t>(pid),
+                          getpriority(PRIO_PROCESS, 0) + options.niceness);
 }
 
 VideoEncoder::~VideoEncoder() {

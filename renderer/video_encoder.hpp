@@ -31,6 +31,10 @@ struct VideoOptions {
     int crf = 18;                  // x264 quality (0 lossless .. 51); 18 is visually lossless
     std::string preset = "fast";   // x264 speed/size trade-off
     std::string ffmpeg = "ffmpeg"; // program name (PATH lookup) or path
+    // Added to ffmpeg's CPU niceness once it has started (0: as this thread). Frame sinks use
+    // a positive value so that, where rendering runs on the same CPUs (lavapipe), the
+    // encoder takes the cores' idle time rather than preempting the renderer.
+    int niceness = 0;
 };
 
 class VideoEncoder {
