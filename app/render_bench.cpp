@@ -1,9 +1,11 @@
 // `signstim devices` and `signstim bench render` (Vulkan side).
 //
 // bench render: frames per second of the Renderer (render + readback, pipelined with
-// framesInFlight() frames) beside a raw baseline — a minimal draw-and-readback loop written
-// directly against Vulkan on the same device and mesh (renderer/vk_raw_baseline.hpp) — so
-// the renderer's overhead is a ratio from one run; CPU time per frame beside each figure
+// framesInFlight() frames) beside two raw baselines — minimal draw-and-readback loops written
+// directly against Vulkan on the same device and mesh (renderer/vk_raw_baseline.hpp): raw-lit
+// with the Renderer's own shaders and constants (same image, checked per row), so renderer /
+// raw-lit is the renderer's overhead, and raw 1-line with one dot product of shading, so
+// renderer / raw 1-line is the cost of lighting plus overhead; CPU time per frame beside each figure
 // (on a CPU device such as lavapipe it is the work, and it is less sensitive than wall time
 // to other load). With frame sinks (PNG sequence, MP4) a second table gives each stage
 // alone and end to end, beside the slower stage, the serial sum and the shared-CPU bound.
@@ -169,6 +171,20 @@ struct SinkFigures {
 // cores), "sum" the rate if the stages ran one after the other, "cpu" the rate at which the
 // cores could do both stages' CPU work (the bound when, as with lavapipe, rendering and
 // encoding compete for the same cores).
+// Largest and mean absolute difference of two RGBA8 images' bytes (255 if sizes differ).
+std::pair<int, double> imageDifference(const std::vector<std::uint8_t>& a,
+                                       const std::vector<std::uint8_t>& b) {
+    if (a.size() != b.size() || a.empty()) return {255, 255.0};
+    int largest = 0;
+    double sum = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const int d = a[i] > b[i] ? a[i] - b[i] : b[i] - a[i];
+        largest = std::max(largest, d);
+        sum += d;
+    }
+    return {largest, sum / double(a.size())};
+}
+
 std::string sinkColumns(const Figure& render, const SinkFigures& sink, unsigned cores) {
     if (!sink.available) return "   n/a |   n/a |   n/a |   n/a |   n/a |";
     const double slowest = std::min(render.fps, sink.alone.fps);
@@ -214,10 +230,14 @@ void runRenderBench(const BenchSettings& settings) {
                          ("signstim-bench-" + std::to_string(::getpid()));
     std::printf(
         "fps = frames per second (best of %u interleaved rounds); cpu = CPU ms per frame, all "
-        "threads (lowest of the rounds); ratio = renderer pipelined / raw\n\n",
+        "threads (lowest of the rounds). raw-lit = minimal loop with the renderer's shaders and "
+        "constants (same image: diff = max/mean |renderer - raw-lit| per byte of the bench "
+        "frame); raw 1-line = minimal loop with one-line shading. overhead = renderer "
+        "pipelined / raw-lit (fps; cpu: raw-lit / renderer); lighting+overhead = renderer "
+        "pipelined / raw 1-line\n\n",
         settings.rounds);
-    std::printf("| size      | MSAA | triangles | raw fps | renderer sync | renderer pipelined | ratio | raw cpu | renderer cpu | cpu ratio |\n");
-    std::printf("|-----------|------|-----------|---------|---------------|--------------------|-------|---------|--------------|-----------|\n");
+    std::printf("| size      | MSAA | triangles | raw 1-line fps | raw-lit fps | renderer sync | renderer pipelined | overhead | lighting+overhead | raw 1-line cpu | raw-lit cpu | renderer cpu | cpu overhead | cpu lighting+overhead | diff max/mean |\n");
+    std::printf("|-----------|------|-----------|----------------|-------------|---------------|--------------------|----------|-------------------|----------------|-------------|--------------|--------------|-----------------------|---------------|\n");
     std::vector<std::string> sinkRows;
     for (const Size& size : sizes) {
         for (std::uint32_t msaa : msaaCounts) {
@@ -229,6 +249,8 @@ void runRenderBench(const BenchSettings& settings) {
                 raw.height = size.height;
                 raw.msaa = msaa;
                 render::RawBaseline baseline(mesh, raw);
+                raw.shading = render::RawShading::Lit;  // RendererOptions' default lighting
+                render::RawBaseline rawLit(mesh, raw);
 
                 render::RendererOptions options;
                 options.device = settings.device;
@@ -238,18 +260,26 @@ void runRenderBench(const BenchSettings& settings) {
                 render::Renderer renderer(options);
                 const int handle = renderer.addScene(mesh);
                 const std::vector<render::Frame> still = {benchFrame(handle)};
-                Figure rawBest, syncBest, pipelinedBest;
+                // Image agreement of raw-lit and the renderer on the bench frame.
+                render::Image reference;
+                renderer.render(still[0], reference);
+                rawLit.run(1);  // also the warm-up
+                const auto [diffMax, diffMean] = imageDifference(reference.bytes, rawLit.pixels());
+                Figure rawBest, litBest, syncBest, pipelinedBest;
                 baseline.run(1);  // warm-up
                 for (std::uint32_t round = 0; round < settings.rounds; ++round) {
                     keepBest(rawBest, measure(frames, [&] { baseline.run(frames); }));
+                    keepBest(litBest, measure(frames, [&] { rawLit.run(frames); }));
                     keepBest(syncBest, measureSynchronous(renderer, still[0], frames));
                     keepBest(pipelinedBest, measurePipelined(renderer, still, frames, nullptr));
                 }
                 const auto shown = static_cast<unsigned>(mesh.meshes[0].primitives[0].indices.size() / 3);
-                std::printf("| %4ux%-4u | %ux   | %9u | %7.0f | %13.0f | %18.0f | %4.2fx | %7.2f | %12.2f | %8.2fx |\n",
-                            size.width, size.height, msaa, shown, rawBest.fps, syncBest.fps,
-                            pipelinedBest.fps, pipelinedBest.fps / rawBest.fps, rawBest.cpuMs,
-                            pipelinedBest.cpuMs, rawBest.cpuMs / pipelinedBest.cpuMs);
+                std::printf("| %4ux%-4u | %ux   | %9u | %14.0f | %11.0f | %13.0f | %18.0f | %7.2fx | %16.2fx | %14.2f | %11.2f | %12.2f | %11.2fx | %20.2fx | %4d / %6.4f |\n",
+                            size.width, size.height, msaa, shown, rawBest.fps, litBest.fps,
+                            syncBest.fps, pipelinedBest.fps, pipelinedBest.fps / litBest.fps,
+                            pipelinedBest.fps / rawBest.fps, rawBest.cpuMs, litBest.cpuMs,
+                            pipelinedBest.cpuMs, litBest.cpuMs / pipelinedBest.cpuMs,
+                            rawBest.cpuMs / pipelinedBest.cpuMs, diffMax, diffMean);
                 std::fflush(stdout);
                 if (!settings.sinks) continue;
 
@@ -318,7 +348,7 @@ void registerRenderBenchCommands(Commands& commands) {
     CLI::App* bench = commands.bench.add_subcommand(
         "render",
         "Renderer frames/s (render + readback, +PNG, +MP4) at 640x480 and 1280x720, MSAA 1x/4x, "
-        "~20k/~100k triangles, beside a raw Vulkan draw-and-readback baseline");
+        "~20k/~100k triangles, beside raw Vulkan draw-and-readback baselines (renderer's shading; one-line shading)");
     bench->add_option("--device", settings->device, "Vulkan device name substring or index");
     bench->add_option("--frames", settings->frames, "Frames per measurement")
         ->capture_default_str();

@@ -43,27 +43,6 @@ struct PushConstants {
     std::uint32_t padding[2] = {0, 0};
 };
 
-// The lighting part of mesh.frag's specialisation constants: directions towards the lights.
-void setLighting(const Lighting& lighting, vk::FragmentConstants& constants) {
-    glm::vec3 key = lighting.keyDirection;
-    if (glm::length(key) < 1e-6f) key = {-0.3f, -0.5f, -1.0f};
-    key = glm::normalize(key);
-    // Fill mirrors the key to the other side and comes in nearly level; the rim comes from
-    // behind and above.
-    glm::vec3 fill = glm::normalize(glm::vec3(-key.x * 2.0f + (key.x == 0.0f ? 0.5f : 0.0f),
-                                              key.y * 0.2f, key.z));
-    glm::vec3 rim = glm::normalize(glm::vec3(-key.x * 0.5f, -0.6f, -key.z));
-    for (int c = 0; c < 3; ++c) {
-        constants.toKey[c] = -key[c];
-        constants.toFill[c] = -fill[c];
-        constants.toRim[c] = -rim[c];
-    }
-    constants.keyIntensity = lighting.keyIntensity;
-    constants.fillIntensity = lighting.fillIntensity;
-    constants.rimIntensity = lighting.rimIntensity;
-    constants.ambient = lighting.ambient;
-}
-
 std::string joinCounts(const std::vector<std::uint32_t>& counts) {
     std::string text;
     for (auto c : counts) text += (text.empty() ? "" : ", ") + std::to_string(c);
@@ -89,6 +68,72 @@ struct Draw {
 };
 
 }  // namespace
+
+namespace vk {
+
+// The lighting part of mesh.frag's specialisation constants: directions towards the lights.
+void setLighting(const Lighting& lighting, FragmentConstants& constants) {
+    glm::vec3 key = lighting.keyDirection;
+    if (glm::length(key) < 1e-6f) key = {-0.3f, -0.5f, -1.0f};
+    key = glm::normalize(key);
+    // Fill mirrors the key to the other side and comes in nearly level; the rim comes from
+    // behind and above.
+    glm::vec3 fill = glm::normalize(glm::vec3(-key.x * 2.0f + (key.x == 0.0f ? 0.5f : 0.0f),
+                                              key.y * 0.2f, key.z));
+    glm::vec3 rim = glm::normalize(glm::vec3(-key.x * 0.5f, -0.6f, -key.z));
+    for (int c = 0; c < 3; ++c) {
+        constants.toKey[c] = -key[c];
+        constants.toFill[c] = -fill[c];
+        constants.toRim[c] = -rim[c];
+    }
+    constants.keyIntensity = lighting.keyIntensity;
+    constants.fillIntensity = lighting.fillIntensity;
+    constants.rimIntensity = lighting.rimIntensity;
+    constants.ambient = lighting.ambient;
+}
+
+PipelineDesc meshPipelineDesc(VkShaderModule vertex, VkShaderModule fragment, VkFormat colorFormat,
+                              VkFormat depthFormat, std::uint32_t msaa) {
+    PipelineDesc desc;
+    desc.vertex = vertex;
+    desc.fragment = fragment;
+    desc.bindings = {{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.attributes = {
+        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, position))},
+        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, normal))},
+        {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, uv))},
+        {3, 0, VK_FORMAT_R32G32B32A32_UINT, static_cast<std::uint32_t>(offsetof(Vertex, joints))},
+        {4, 0, VK_FORMAT_R32G32B32A32_SFLOAT,
+         static_cast<std::uint32_t>(offsetof(Vertex, weights))}};
+    desc.colorFormat = colorFormat;
+    desc.depthFormat = depthFormat;
+    desc.samples = static_cast<VkSampleCountFlagBits>(msaa);
+    return desc;
+}
+
+UniquePipeline createMeshPipeline(VkDevice device, VkPipelineLayout layout, const PipelineDesc& mesh,
+                                  const GpuMaterial& material, const FragmentConstants& constants,
+                                  bool skinned) {
+    std::vector<VkSpecializationMapEntry> entries(kFragmentConstantCount);
+    for (std::uint32_t id = 0; id < kFragmentConstantCount; ++id)
+        entries[id] = {id, id * 4u, 4u};  // bools are 32-bit in SPIR-V, like the floats
+    const VkSpecializationInfo specialization{kFragmentConstantCount, entries.data(),
+                                              sizeof(constants), &constants};
+    const VkBool32 vertexConstant = skinned ? VK_TRUE : VK_FALSE;  // SKINNED in mesh.vert
+    const VkSpecializationMapEntry vertexEntry{0, 0, sizeof(VkBool32)};
+    const VkSpecializationInfo vertexSpecialization{1, &vertexEntry, sizeof(VkBool32),
+                                                    &vertexConstant};
+    PipelineDesc desc = mesh;
+    desc.vertexSpecialization = &vertexSpecialization;
+    desc.fragmentSpecialization = &specialization;
+    desc.dynamicCullMode = false;
+    desc.cullMode = material.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+    desc.blend = material.alphaMode == AlphaMode::Blend;
+    desc.depthWrite = !desc.blend;  // blended surfaces test against, but do not hide, others
+    return createGraphicsPipeline(device, layout, desc);
+}
+
+}  // namespace vk
 
 struct Renderer::Impl {
     struct Slot {
@@ -182,50 +227,23 @@ void Renderer::Impl::createPipelineLayout(VkFormat colorFormat, VkFormat depthFo
 
     vertexShader = vk::createShaderModule(dev, mesh_vert_spv, sizeof(mesh_vert_spv));
     fragmentShader = vk::createShaderModule(dev, mesh_frag_spv, sizeof(mesh_frag_spv));
-    vk::PipelineDesc& desc = pipelineDesc;
-    desc.vertex = vertexShader.get();
-    desc.fragment = fragmentShader.get();
-    desc.bindings = {{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.attributes = {
-        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, position))},
-        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, normal))},
-        {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, uv))},
-        {3, 0, VK_FORMAT_R32G32B32A32_UINT, static_cast<std::uint32_t>(offsetof(Vertex, joints))},
-        {4, 0, VK_FORMAT_R32G32B32A32_SFLOAT,
-         static_cast<std::uint32_t>(offsetof(Vertex, weights))}};
-    desc.colorFormat = colorFormat;
-    desc.depthFormat = depthFormat;
-    desc.samples = static_cast<VkSampleCountFlagBits>(options.msaa);
+    pipelineDesc = vk::meshPipelineDesc(vertexShader.get(), fragmentShader.get(), colorFormat,
+                                        depthFormat, options.msaa);
 }
 
 VkPipeline Renderer::Impl::pipelineFor(const vk::GpuMaterial& material, bool skinned) {
     auto cached = materialPipelines.find({&material, skinned});
     if (cached != materialPipelines.end()) return cached->second;
     vk::FragmentConstants constants = material.constants;
-    setLighting(options.lighting, constants);
+    vk::setLighting(options.lighting, constants);
     std::vector<std::uint32_t> key(vk::kFragmentConstantCount + 1);
     std::memcpy(key.data(), &constants, sizeof(constants));
     key.back() = (skinned ? 1u : 0u) | (material.doubleSided ? 2u : 0u);
     auto found = pipelines.find(key);
     if (found != pipelines.end()) return materialPipelines[{&material, skinned}] = found->second.get();
 
-    std::vector<VkSpecializationMapEntry> entries(vk::kFragmentConstantCount);
-    for (std::uint32_t id = 0; id < vk::kFragmentConstantCount; ++id)
-        entries[id] = {id, id * 4u, 4u};  // bools are 32-bit in SPIR-V, like the floats
-    const VkSpecializationInfo specialization{vk::kFragmentConstantCount, entries.data(),
-                                              sizeof(constants), &constants};
-    const VkBool32 vertexConstant = skinned ? VK_TRUE : VK_FALSE;  // SKINNED in mesh.vert
-    const VkSpecializationMapEntry vertexEntry{0, 0, sizeof(VkBool32)};
-    const VkSpecializationInfo vertexSpecialization{1, &vertexEntry, sizeof(VkBool32),
-                                                    &vertexConstant};
-    vk::PipelineDesc desc = pipelineDesc;
-    desc.vertexSpecialization = &vertexSpecialization;
-    desc.fragmentSpecialization = &specialization;
-    desc.dynamicCullMode = false;
-    desc.cullMode = material.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-    desc.blend = material.alphaMode == AlphaMode::Blend;
-    desc.depthWrite = !desc.blend;  // blended surfaces test against, but do not hide, others
-    auto pipeline = vk::createGraphicsPipeline(device->get(), pipelineLayout.get(), desc);
+    auto pipeline = vk::createMeshPipeline(device->get(), pipelineLayout.get(), pipelineDesc,
+                                           material, constants, skinned);
     VkPipeline handle = pipelines.emplace(std::move(key), std::move(pipeline)).first->second.get();
     return materialPipelines[{&material, skinned}] = handle;
 }

@@ -2,14 +2,23 @@
 
 #include "common/error.hpp"
 #include "renderer/vk_check.hpp"
+#include "renderer/vk_commands.hpp"
+#include "renderer/vk_descriptors.hpp"
 #include "renderer/vk_device.hpp"
 #include "renderer/vk_instance.hpp"
+#include "renderer/vk_pipelines.hpp"
+#include "renderer/vk_readback.hpp"
+#include "renderer/vk_scene.hpp"
+#include "renderer/vk_targets.hpp"
 
 #include "shaders/bench_raw.frag.spv.h"
 #include "shaders/bench_raw.vert.spv.h"
+#include "shaders/mesh.frag.spv.h"
+#include "shaders/mesh.vert.spv.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <vector>
@@ -56,12 +65,43 @@ struct Objects {
     }
 };
 
+// Lit shading: the Renderer's shader modules, set layouts, push constants and per-material
+// pipelines (vk::meshPipelineDesc / vk::createMeshPipeline), its material descriptor sets
+// (vk::GpuScene: textures, or the white defaults) and one storage buffer holding the mesh
+// node's world and normal matrices. Created once; the loop itself is the same as OneLine.
+struct LitObjects {
+    // Matches `Push` in shaders/mesh.vert (and renderer.cpp's PushConstants).
+    struct Push {
+        glm::mat4 viewProjection;
+        glm::vec4 cameraPosition;
+        std::uint32_t matrixBase = 0;
+        std::uint32_t jointCount = 0;  // 0: rigid
+        std::uint32_t padding[2] = {0, 0};
+    };
+    struct Range {
+        std::uint32_t firstIndex, indexCount;
+        VkPipeline pipeline;
+        VkDescriptorSet materialSet;
+        bool blend;
+    };
+    std::unique_ptr<vk::CommandPool> commands;
+    vk::UniqueDescriptorSetLayout frameLayout, materialLayout;
+    vk::UniquePipelineLayout layout;
+    vk::UniqueShaderModule vertex, fragment;
+    std::unique_ptr<vk::GpuScene> scene;
+    vk::UniqueDescriptorPool pool;
+    VkDescriptorSet frameSet = VK_NULL_HANDLE;
+    std::vector<vk::UniquePipeline> pipelines;
+    std::vector<Range> ranges;
+};
+
 }  // namespace
 
 struct RawBaseline::Impl {
-    vk::Instance instance{false};
+    std::unique_ptr<vk::Instance> instance;
     std::unique_ptr<vk::Device> device;
     Objects objects;
+    LitObjects lit;  // destroyed before `objects` (after ~RawBaseline waited for the device)
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     void* readbackData = nullptr;
     std::vector<std::uint8_t> host;
@@ -80,7 +120,9 @@ struct RawBaseline::Impl {
     }
 };
 
-RawBaseline::~RawBaseline() = default;
+RawBaseline::~RawBaseline() {
+    if (impl_ && impl_->device) vkDeviceWaitIdle(impl_->device->get());
+}
 
 void RawBaseline::run(std::uint32_t frames) {
     for (std::uint32_t i = 0; i < frames; ++i) impl_->frame();
@@ -94,6 +136,14 @@ double RawBaseline::measure(std::uint32_t frames) {
     return seconds > 0 ? frames / seconds : 0.0;
 }
 
+const std::vector<std::uint8_t>& RawBaseline::pixels() const { return impl_->host; }
+
+bool RawBaseline::validationEnabled() const { return impl_->instance->validation(); }
+
+std::vector<std::string> RawBaseline::validationMessages() const {
+    return impl_->instance->messages();
+}
+
 std::uint64_t RawBaseline::checksum() const {
     std::uint64_t sum = 0;
     for (std::uint8_t byte : impl_->host) sum += byte;
@@ -104,16 +154,19 @@ RawBaseline::RawBaseline(const Scene& mesh, const RawBaselineSettings& settings)
     : impl_(std::make_unique<Impl>()) {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
+    std::vector<std::uint32_t> primitiveFirstIndex;  // Lit: one draw per primitive (material)
     if (!mesh.meshes.empty()) {
         for (const auto& primitive : mesh.meshes[0].primitives) {
             const auto base = static_cast<std::uint32_t>(vertices.size());
+            primitiveFirstIndex.push_back(static_cast<std::uint32_t>(indices.size()));
             vertices.insert(vertices.end(), primitive.vertices.begin(), primitive.vertices.end());
             for (auto index : primitive.indices) indices.push_back(base + index);
         }
     }
     if (indices.empty()) throw InputError("raw baseline: the scene has no triangles");
 
-    const auto physicalDevices = vk::enumeratePhysicalDevices(impl_->instance.get());
+    impl_->instance = std::make_unique<vk::Instance>(vk::validationWanted(settings.validation));
+    const auto physicalDevices = vk::enumeratePhysicalDevices(impl_->instance->get());
     const vk::PhysicalDevice& physical = vk::selectPhysicalDevice(physicalDevices, settings.device);
     impl_->device = std::make_unique<vk::Device>(physical);
     vk::Device& device = *impl_->device;
@@ -121,7 +174,10 @@ RawBaseline::RawBaseline(const Scene& mesh, const RawBaselineSettings& settings)
     Objects& objects = impl_->objects;
     objects.device = dev;
     const auto samples = static_cast<VkSampleCountFlagBits>(settings.msaa);
-    const VkFormat colorFormat = VK_FORMAT_R8G8B8A8_SRGB, depthFormat = VK_FORMAT_D32_SFLOAT;
+    // The Renderer's formats for PixelFormat::Rgba8 (R8G8B8A8_SRGB, D32_SFLOAT on lavapipe).
+    const VkFormat colorFormat = vk::colorFormatFor(PixelFormat::Rgba8);
+    const VkFormat depthFormat = vk::chooseDepthFormat(device);
+    const bool lit = settings.shading == RawShading::Lit;
     const VkExtent2D extent{settings.width, settings.height};
 
     auto allocate = [&](VkMemoryRequirements requirements, VkMemoryPropertyFlags flags) {
@@ -198,75 +254,129 @@ RawBaseline::RawBaseline(const Scene& mesh, const RawBaselineSettings& settings)
     VkImage depth = image(depthFormat, samples, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                           VK_IMAGE_ASPECT_DEPTH_BIT, &depthView);
 
-    // Pipeline: position + normal from the same 64-byte vertices the renderer uses.
-    auto moduleInfo = make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-    moduleInfo.codeSize = sizeof(bench_raw_vert_spv);
-    moduleInfo.pCode = bench_raw_vert_spv;
-    check(vkCreateShaderModule(dev, &moduleInfo, nullptr, &objects.modules[0]), "vkCreateShaderModule");
-    moduleInfo.codeSize = sizeof(bench_raw_frag_spv);
-    moduleInfo.pCode = bench_raw_frag_spv;
-    check(vkCreateShaderModule(dev, &moduleInfo, nullptr, &objects.modules[1]), "vkCreateShaderModule");
-    VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4)};
-    auto layoutInfo = make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &push;
-    check(vkCreatePipelineLayout(dev, &layoutInfo, nullptr, &objects.layout), "vkCreatePipelineLayout");
-
-    VkPipelineShaderStageCreateInfo stages[2];
-    for (int i = 0; i < 2; ++i) {
-        stages[i] = make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-        stages[i].stage = i == 0 ? VK_SHADER_STAGE_VERTEX_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
-        stages[i].module = objects.modules[i];
-        stages[i].pName = "main";
-    }
-    VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-    VkVertexInputAttributeDescription attributes[2] = {
-        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, normal))}};
-    auto vertexInput = make<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    vertexInput.vertexBindingDescriptionCount = 1;
-    vertexInput.pVertexBindingDescriptions = &binding;
-    vertexInput.vertexAttributeDescriptionCount = 2;
-    vertexInput.pVertexAttributeDescriptions = attributes;
-    auto assembly = make<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     VkViewport viewport{0, float(extent.height), float(extent.width), -float(extent.height), 0, 1};
     VkRect2D scissor{{0, 0}, extent};
-    auto viewportState = make<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
-    viewportState.viewportCount = viewportState.scissorCount = 1;
-    viewportState.pViewports = &viewport;
-    viewportState.pScissors = &scissor;
-    auto raster = make<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
-    raster.cullMode = VK_CULL_MODE_BACK_BIT;
-    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    raster.lineWidth = 1.0f;
-    auto multisample = make<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-    multisample.rasterizationSamples = samples;
-    auto depthState = make<VkPipelineDepthStencilStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
-    depthState.depthTestEnable = depthState.depthWriteEnable = VK_TRUE;
-    depthState.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-    VkPipelineColorBlendAttachmentState blendAttachment{};
-    blendAttachment.colorWriteMask = 0xf;
-    auto blend = make<VkPipelineColorBlendStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
-    blend.attachmentCount = 1;
-    blend.pAttachments = &blendAttachment;
-    auto rendering = make<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachmentFormats = &colorFormat;
-    rendering.depthAttachmentFormat = depthFormat;
-    auto pipelineInfo = make<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering);
-    pipelineInfo.stageCount = 2;
-    pipelineInfo.pStages = stages;
-    pipelineInfo.pVertexInputState = &vertexInput;
-    pipelineInfo.pInputAssemblyState = &assembly;
-    pipelineInfo.pViewportState = &viewportState;
-    pipelineInfo.pRasterizationState = &raster;
-    pipelineInfo.pMultisampleState = &multisample;
-    pipelineInfo.pDepthStencilState = &depthState;
-    pipelineInfo.pColorBlendState = &blend;
-    pipelineInfo.layout = objects.layout;
-    check(vkCreateGraphicsPipelines(dev, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &objects.pipeline),
-          "vkCreateGraphicsPipelines");
+    LitObjects& litObjects = impl_->lit;
+    if (lit) {
+        // As Renderer::Impl::createPipelineLayout and pipelineFor.
+        litObjects.commands = std::make_unique<vk::CommandPool>(device);
+        litObjects.frameLayout = vk::createSetLayout(
+            dev, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT}});
+        litObjects.materialLayout = vk::createSetLayout(
+            dev, {{1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
+                  {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}});
+        litObjects.layout = vk::createPipelineLayout(
+            dev, {litObjects.frameLayout.get(), litObjects.materialLayout.get()},
+            {{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LitObjects::Push)}});
+        litObjects.vertex = vk::createShaderModule(dev, mesh_vert_spv, sizeof(mesh_vert_spv));
+        litObjects.fragment = vk::createShaderModule(dev, mesh_frag_spv, sizeof(mesh_frag_spv));
+        // Materials only (descriptor sets, constants); the loop draws from the buffers above.
+        litObjects.scene = std::make_unique<vk::GpuScene>(device, *litObjects.commands, mesh,
+                                                          litObjects.materialLayout.get());
+        const vk::PipelineDesc desc = vk::meshPipelineDesc(
+            litObjects.vertex.get(), litObjects.fragment.get(), colorFormat, depthFormat, settings.msaa);
+        const auto& primitives = litObjects.scene->primitives(0);
+        for (std::size_t p = 0; p < primitives.size(); ++p) {
+            if (primitives[p].indexCount == 0) continue;
+            const vk::GpuMaterial& material = litObjects.scene->material(primitives[p].material);
+            vk::FragmentConstants constants = material.constants;
+            vk::setLighting(settings.lighting, constants);
+            litObjects.pipelines.push_back(vk::createMeshPipeline(dev, litObjects.layout.get(), desc,
+                                                                  material, constants, false));
+            litObjects.ranges.push_back({primitiveFirstIndex[p], primitives[p].indexCount,
+                                         litObjects.pipelines.back().get(), material.set,
+                                         material.alphaMode == AlphaMode::Blend});
+        }
+        // Opaque first, then blended (the renderer's order; one mesh at one distance).
+        std::stable_partition(litObjects.ranges.begin(), litObjects.ranges.end(),
+                              [](const LitObjects::Range& range) { return !range.blend; });
+        // World and normal matrix of the node holding the mesh, as the renderer computes them.
+        std::vector<glm::mat4> world;
+        computeWorldTransforms(mesh, restPose(mesh), world);
+        glm::mat4 model(1.0f);
+        for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+            if (mesh.nodes[n].mesh == 0) {
+                model = world[n];
+                break;
+            }
+        const glm::mat4 matrices[2] = {model, glm::mat4(glm::transpose(glm::inverse(glm::mat3(model))))};
+        void* matrixData = nullptr;
+        VkBuffer matrixBuffer = buffer(sizeof matrices, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, &matrixData);
+        std::memcpy(matrixData, matrices, sizeof matrices);
+        litObjects.pool = vk::createDescriptorPool(dev, 1, {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}});
+        litObjects.frameSet = vk::allocateSet(dev, litObjects.pool.get(), litObjects.frameLayout.get());
+        vk::DescriptorWriter()
+            .buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, matrixBuffer, sizeof matrices)
+            .update(dev, litObjects.frameSet);
+    } else {
+        // Pipeline: position + normal from the same 64-byte vertices the renderer uses.
+        auto moduleInfo = make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+        moduleInfo.codeSize = sizeof(bench_raw_vert_spv);
+        moduleInfo.pCode = bench_raw_vert_spv;
+        check(vkCreateShaderModule(dev, &moduleInfo, nullptr, &objects.modules[0]), "vkCreateShaderModule");
+        moduleInfo.codeSize = sizeof(bench_raw_frag_spv);
+        moduleInfo.pCode = bench_raw_frag_spv;
+        check(vkCreateShaderModule(dev, &moduleInfo, nullptr, &objects.modules[1]), "vkCreateShaderModule");
+        VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4)};
+        auto layoutInfo = make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+        layoutInfo.pushConstantRangeCount = 1;
+        layoutInfo.pPushConstantRanges = &push;
+        check(vkCreatePipelineLayout(dev, &layoutInfo, nullptr, &objects.layout), "vkCreatePipelineLayout");
+
+        VkPipelineShaderStageCreateInfo stages[2];
+        for (int i = 0; i < 2; ++i) {
+            stages[i] = make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+            stages[i].stage = i == 0 ? VK_SHADER_STAGE_VERTEX_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
+            stages[i].module = objects.modules[i];
+            stages[i].pName = "main";
+        }
+        VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+        VkVertexInputAttributeDescription attributes[2] = {
+            {0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
+            {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, normal))}};
+        auto vertexInput = make<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+        vertexInput.vertexBindingDescriptionCount = 1;
+        vertexInput.pVertexBindingDescriptions = &binding;
+        vertexInput.vertexAttributeDescriptionCount = 2;
+        vertexInput.pVertexAttributeDescriptions = attributes;
+        auto assembly = make<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+        assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+        auto viewportState = make<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+        viewportState.viewportCount = viewportState.scissorCount = 1;
+        viewportState.pViewports = &viewport;
+        viewportState.pScissors = &scissor;
+        auto raster = make<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+        raster.cullMode = VK_CULL_MODE_BACK_BIT;
+        raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+        raster.lineWidth = 1.0f;
+        auto multisample = make<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+        multisample.rasterizationSamples = samples;
+        auto depthState = make<VkPipelineDepthStencilStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
+        depthState.depthTestEnable = depthState.depthWriteEnable = VK_TRUE;
+        depthState.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+        VkPipelineColorBlendAttachmentState blendAttachment{};
+        blendAttachment.colorWriteMask = 0xf;
+        auto blend = make<VkPipelineColorBlendStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+        blend.attachmentCount = 1;
+        blend.pAttachments = &blendAttachment;
+        auto rendering = make<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+        rendering.colorAttachmentCount = 1;
+        rendering.pColorAttachmentFormats = &colorFormat;
+        rendering.depthAttachmentFormat = depthFormat;
+        auto pipelineInfo = make<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering);
+        pipelineInfo.stageCount = 2;
+        pipelineInfo.pStages = stages;
+        pipelineInfo.pVertexInputState = &vertexInput;
+        pipelineInfo.pInputAssemblyState = &assembly;
+        pipelineInfo.pViewportState = &viewportState;
+        pipelineInfo.pRasterizationState = &raster;
+        pipelineInfo.pMultisampleState = &multisample;
+        pipelineInfo.pDepthStencilState = &depthState;
+        pipelineInfo.pColorBlendState = &blend;
+        pipelineInfo.layout = objects.layout;
+        check(vkCreateGraphicsPipelines(dev, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &objects.pipeline),
+              "vkCreateGraphicsPipelines");
+    }
 
     auto poolInfo = make<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
     poolInfo.queueFamilyIndex = device.queueFamily();
@@ -336,15 +446,36 @@ RawBaseline::RawBaseline(const Scene& mesh, const RawBaselineSettings& settings)
     renderingInfo.pColorAttachments = &colorAttachment;
     renderingInfo.pDepthAttachment = &depthAttachment;
     vkCmdBeginRendering(cmd, &renderingInfo);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.pipeline);
     const float aspect = float(extent.width) / float(extent.height);
+    const glm::vec3 eye(0, 0, 2.2f);
     const glm::mat4 viewProjection = glm::perspective(glm::radians(30.0f), aspect, 0.1f, 10.0f) *
-                                     glm::lookAt(glm::vec3(0, 0, 2.2f), glm::vec3(0), glm::vec3(0, 1, 0));
-    vkCmdPushConstants(cmd, objects.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4), &viewProjection);
+                                     glm::lookAt(eye, glm::vec3(0), glm::vec3(0, 1, 0));
     VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(cmd, indexBuffer, 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(indices.size()), 1, 0, 0, 0);
+    if (lit) {
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        VkPipelineLayout layout = litObjects.layout.get();
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1,
+                                &litObjects.frameSet, 0, nullptr);
+        LitObjects::Push push;
+        push.viewProjection = viewProjection;
+        push.cameraPosition = glm::vec4(eye, 1.0f);
+        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                           0, sizeof push, &push);
+        for (const auto& range : litObjects.ranges) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, range.pipeline);
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1,
+                                    &range.materialSet, 0, nullptr);
+            vkCmdDrawIndexed(cmd, range.indexCount, 1, range.firstIndex, 0, 0);
+        }
+    } else {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, objects.pipeline);
+        vkCmdPushConstants(cmd, objects.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
+                           &viewProjection);
+        vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(indices.size()), 1, 0, 0, 0);
+    }
     vkCmdEndRendering(cmd);
     barrier(resolve, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
             attachmentStage, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,

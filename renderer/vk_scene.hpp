@@ -5,10 +5,15 @@
 #include "renderer/scene.hpp"
 #include "renderer/vk_commands.hpp"
 #include "renderer/vk_memory.hpp"
+#include "renderer/vk_pipelines.hpp"
 
 #include <map>
 #include <utility>
 #include <vector>
+
+namespace signstim::render {
+struct Lighting;
+}
 
 namespace signstim::render::vk {
 
@@ -34,6 +39,10 @@ struct FragmentConstants {
 static_assert(sizeof(FragmentConstants) == 37 * 4, "one 4-byte word per constant id");
 constexpr std::uint32_t kFragmentConstantCount = 37;
 
+// The lighting part of FragmentConstants (ids 24..36), as the Renderer sets it (defined in
+// renderer.cpp; also used by the raw-lit baseline of `signstim bench render`).
+void setLighting(const Lighting& lighting, FragmentConstants& constants);
+
 // The material part of FragmentConstants (ids 0..23).
 FragmentConstants materialConstants(const Material& material, bool baseTexture, bool mrTexture);
 
@@ -51,6 +60,17 @@ struct GpuMaterial {
     FragmentConstants constants;  // material part; lighting left at its defaults
     VkDescriptorSet set = VK_NULL_HANDLE;  // textures (set 1, bindings 1 and 2)
 };
+
+// The Renderer's mesh pipeline (shaders/mesh.vert + mesh.frag, the five vertex attributes of
+// render::Vertex) and one material's pipeline from it: `constants` = the material's
+// FragmentConstants with the lighting set (setLighting), cull mode and blending from the
+// material. Defined in renderer.cpp; the raw-lit baseline of `signstim bench render` builds
+// its pipeline with the same two functions so both draw the same image.
+PipelineDesc meshPipelineDesc(VkShaderModule vertex, VkShaderModule fragment, VkFormat colorFormat,
+                              VkFormat depthFormat, std::uint32_t msaa);
+UniquePipeline createMeshPipeline(VkDevice device, VkPipelineLayout layout, const PipelineDesc& mesh,
+                                  const GpuMaterial& material, const FragmentConstants& constants,
+                                  bool skinned);
 
 class GpuScene {
 public:
