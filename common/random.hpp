@@ -1,6 +1,7 @@
 #pragma once
 // Portable, seedable randomness. Same seed -> same numbers with any compiler and standard
-// library (SPEC §4.2: never std::shuffle or std::*_distribution).
+// library (SPEC §4.2: never the standard library's shuffle or distribution classes, whose
+// algorithms differ between implementations).
 #include <cmath>
 #include <cstdint>
 #include <string_view>
