@@ -206,7 +206,8 @@ void registerDemoCommand(Commands& commands) {
     demo->add_flag("--quiet", o->quiet, "No progress on stderr");
     demo->callback([o] {
         runDemo(*o);
-        std::printf("signstim: demo written to %s/ (manifest.json lists every file)\n", o->out.c_str());
+        std::printf("signstim: demo written to %s/ (manifest.json lists every file)\n",
+                    std::filesystem::absolute(o->out).lexically_normal().string().c_str());
     });
 }
 
