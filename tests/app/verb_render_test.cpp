@@ -4,7 +4,6 @@
 #include "app/avatar_render.hpp"
 #include "app/signer_pose.hpp"
 #include "app/verb_render.hpp"
-#include "renderer/image_io.hpp"
 #include "stimuli/handshapes.hpp"
 #include "stimuli/verbs.hpp"
 #include "stimuli/verb_models.hpp"
@@ -146,10 +145,6 @@ TEST(VerbRender, FourVersionsSideBySideStayInSyncAndDifferOnlyInTheVerb) {
     // Frame 0: every panel shows the signer at rest — identical panels (labels aside, which
     // sit in the top-left corners: compare the lower half of each cell).
     const render::Image& first = sink.frames.front();
-    if (std::getenv("SIGNSTIM_DUMP")) {
-        render::writeImage(first, "/tmp/first.png");
-        render::writeImage(sink.frames[frames / 2], "/tmp/middle.png");
-    }
     auto lowerHalf = [&](const render::Image& image, std::uint32_t cx, std::uint32_t cy) {
         render::Image cut;
         cut.width = 128;
