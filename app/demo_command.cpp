@@ -151,7 +151,7 @@ void runDemo(const DemoOptions& o) {
 
         std::vector<const VerbClip*> views;
         for (const VerbClip& clip : clips[v]) views.push_back(&clip);
-        const double middle = ClipTiming{}.leadInSeconds + 0.5 * clips[v].front().performance().durationSeconds;
+        const double middle = clips[v].front().middleOfVerbSeconds();
         auto videoSink = render::makeVideoSink(movie, video);
         StillCapturingSink sink(*videoSink, static_cast<std::uint64_t>(middle * fps));
         const std::uint64_t frames = renderClips(

@@ -97,8 +97,7 @@ void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, co
     video.frameRate = frameRate;
     const bool still = out.extension() == ".png";
     std::unique_ptr<render::FrameSink> target = still ? render::makeDiscardSink() : render::makeFrameSink(out, {}, video);
-    const double middle = ClipTiming{}.leadInSeconds + 0.5 * performance.durationSeconds;
-    StillCapturingSink sink(*target, static_cast<std::uint64_t>(middle * options.framesPerSecond));
+    StillCapturingSink sink(*target, static_cast<std::uint64_t>(clip.middleOfVerbSeconds() * options.framesPerSecond));
     const std::uint64_t frames =
         renderClips(renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink,
                     [&](std::uint64_t done, std::uint64_t total) {

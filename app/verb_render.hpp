@@ -68,6 +68,8 @@ public:
              stimuli::VerbPerformance performance, ClipTiming timing = {});
 
     double durationSeconds() const;
+    // Halfway through the verb itself (after the lead-in): where a still of the clip is taken.
+    double middleOfVerbSeconds() const { return timing_.leadInSeconds + 0.5 * performance_.durationSeconds; }
     const stimuli::VerbPerformance& performance() const { return performance_; }
 
     // The signer's posture `seconds` after the clip starts (clamped to the clip).
