@@ -446,7 +446,7 @@ void buildHand(MeshBuilder& mesh, const hand::HandModel& model, hand::Side side,
     const float littleSideEdge = mcp[3].y * ySign - dims.pipWidthMm[3] * 0.5f - 1.0f;
     const glm::vec3 cmc = pose.bodies[bodyIndex(hand::Body::ThumbMetacarpal)].position;
     const glm::vec3 thumbMcp = pose.bodies[bodyIndex(hand::Body::ThumbProximal)].position;
-    const float z0 = -30.0f;
+    const float z0 = dims.palmWristZMm;  // the slab of HandDimensions (also the palm contact check)
     const int palmRings = 16;
     std::vector<Ring> rings;
     for (int i = 0; i <= palmRings; ++i) {
@@ -456,7 +456,8 @@ void buildHand(MeshBuilder& mesh, const hand::HandModel& model, hand::Side side,
         const float hiEdge = std::min(thumbSideEdge, 24.0f + 0.25f * std::max(zNominal, 0.0f)) +
                              6.0f * smoothstep(-5.0f, 20.0f, zNominal) * (1.0f - smoothstep(45.0f, 70.0f, zNominal));
         const float loEdge = std::max(littleSideEdge, -30.0f - 0.25f * std::max(zNominal, 0.0f));
-        const float halfThick = 15.0f - 3.5f * s;
+        const float halfThick =
+            dims.palmHalfThicknessWristMm + (dims.palmHalfThicknessKnucklesMm - dims.palmHalfThicknessWristMm) * s;
         Ring ring;
         ring.center = glm::vec3(0.0f);
         ring.exponent = 3.0f;
@@ -473,7 +474,7 @@ void buildHand(MeshBuilder& mesh, const hand::HandModel& model, hand::Side side,
             const float y = yTrue * ySign;
             const float zEnd = knuckleZ(y) + 2.0f;
             const float z = z0 + s * (zEnd - z0);
-            const float x = 1.5f + halfThick * xUnit;  // palmar side a little fleshier
+            const float x = dims.palmCentreXMm + halfThick * xUnit;  // palmar side a little fleshier
             const glm::vec3 mm{x, y, z};
             // Weights: forearm at the wrist, hand, the proximal phalanges near the knuckles,
             // the thumb metacarpal over the thenar eminence.

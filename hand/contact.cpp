@@ -134,6 +134,40 @@ float distancePointSegment(const glm::vec3& p, const glm::vec3& a, const glm::ve
     return closestPointsOnSegments(p, p, a, b).distance;
 }
 
+float palmClearanceMm(const HandModel& model, const Capsule& capsule, Side side) {
+    // Work in right-hand coordinates: the left hand is the mirror image through y.
+    const float ySign = side == Side::Right ? 1.0f : -1.0f;
+    const glm::vec3 a{capsule.start.x, capsule.start.y * ySign, capsule.start.z};
+    const glm::vec3 b{capsule.end.x, capsule.end.y * ySign, capsule.end.z};
+    const HandDimensions& d = model.dimensions;
+    const float yMin = model.mcpPositionMm[3].y - 0.5f * d.pipWidthMm[3];
+    const float yMax = model.mcpPositionMm[0].y + 0.5f * d.pipWidthMm[0];
+    const float zMin = d.palmWristZMm, zMax = palmKnuckleZMm(model);
+    // Clip the axis a + t(b - a), t in [0, 1], to the slab's y and z extent.
+    float t0 = 0.0f, t1 = 1.0f;
+    const auto clip = [&](float p, float q, float lo, float hi) {
+        const float delta = q - p;
+        if (std::abs(delta) < 1e-9f) {
+            if (p < lo || p > hi) t1 = -1.0f;  // parallel and outside
+            return;
+        }
+        float ta = (lo - p) / delta, tb = (hi - p) / delta;
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+    };
+    clip(a.y, b.y, yMin, yMax);
+    clip(a.z, b.z, zMin, zMax);
+    if (t0 > t1) return std::numeric_limits<float>::infinity();
+    // Height above the surface is linear in t over the clipped part (the surface is linear in
+    // z there), so its minimum is at an end.
+    const auto above = [&](float t) {
+        const glm::vec3 p = a + t * (b - a);
+        return p.x - palmarSurfaceXMm(model, p.z);
+    };
+    return std::min(above(t0), above(t1)) - capsule.radiusMm;
+}
+
 float capsuleGap(const Capsule& a, const Capsule& b) {
     return closestPointsOnSegments(a.start, a.end, b.start, b.end).distance - a.radiusMm - b.radiusMm;
 }

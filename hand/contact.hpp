@@ -69,6 +69,13 @@ float capsuleGap(const Capsule& a, const Capsule& b);
 // stop one radius short of the fingertip so that their rounded end is the fingertip [D].
 std::array<Capsule, kBodyCount> boneCapsules(const HandModel& model, const HandPose& pose);
 
+// Gap between a capsule and the palm's palmar surface (HandDimensions' palm slab), over the
+// part of the capsule's axis that lies in front of the palm (between the wrist and the
+// knuckle line, between the index and little fingers' outer edges): negative when the
+// capsule sinks into the palm. +infinity when no part of it lies in front of the palm.
+// `side` says which hand `capsule` belongs to (the left hand's palm spans -y).
+float palmClearanceMm(const HandModel& model, const Capsule& capsule, Side side);
+
 // Centre of a digit's fingertip sphere (the distal capsule's end) and its radius.
 Capsule fingertipSphere(const HandModel& model, const HandPose& pose, Digit digit);
 

@@ -135,6 +135,10 @@ HandDimensions scaledHandDimensions(float handLengthMm, float handBreadthMm) {
     d.middleMcpHeightMm = 0.446f * handLengthMm;  // SPEC §1.3
     d.littleMcpDropMm = 0.0f;
     d.thumbCmcMm = {10.0f * breadthScale, 0.196f * handBreadthMm, 0.073f * handLengthMm};  // SPEC §1.4
+    d.palmCentreXMm = 1.5f * breadthScale;
+    d.palmWristZMm = -30.0f * handLengthMm / 190.0f;
+    d.palmHalfThicknessWristMm = 15.0f * breadthScale;
+    d.palmHalfThicknessKnucklesMm = 11.5f * breadthScale;
     return d;
 }
 
@@ -250,12 +254,14 @@ HandPose forwardKinematics(const HandModel& model, const JointAngles& angles, Si
     pose.side = side;
     const auto& len = model.dimensions.boneLengthMm;
 
-    // SPEC §1.4: T(c)·R_z(−θ)R_x(−φ)R_z(ψ)·T(0,0,l_mc)R_y(β_MCP)·T(0,0,l_prox)R_y(β_IP)·T(0,0,l_dist)
+    // SPEC §1.4: T(c)·R_z(−θ)R_x(−φ)R_z(ψ)·T(0,0,l_mc)R_y(β_MCP)·T(0,0,l_prox)R_y(β_IP)·T(0,0,l_dist),
+    // with R_z(θ) before R_z(ψ) when the swing is spin-free (HandLimits::thumbSpinFreeSwing).
     {
         const ThumbJointAngles& t = angles.thumb;
         RigidTransform& metacarpal = pose.bodies[static_cast<int>(Body::ThumbMetacarpal)];
         metacarpal.position = model.dimensions.thumbCmcMm;
-        metacarpal.rotation = rotationZ(-t.bendDeg) * rotationX(-t.spreadDeg) * rotationZ(t.twistDeg);
+        metacarpal.rotation = rotationZ(-t.bendDeg) * rotationX(-t.spreadDeg) *
+                              rotationZ((model.limits.thumbSpinFreeSwing ? t.bendDeg : 0.0f) + t.twistDeg);
         RigidTransform& proximal = pose.bodies[static_cast<int>(Body::ThumbProximal)];
         proximal.position = metacarpal.position + alongZ(metacarpal.rotation, len[0][0]);
         proximal.rotation = metacarpal.rotation * rotationY(t.mcpDeg);
@@ -310,6 +316,15 @@ float boneLengthMm(const HandModel& model, Body body) {
     const int b = static_cast<int>(body);
     if (b <= 0 || b >= kBodyCount) return 0.0f;
     return model.dimensions.boneLengthMm[(b - 1) / 3][(b - 1) % 3];
+}
+
+float palmKnuckleZMm(const HandModel& model) { return model.mcpPositionMm[1].z + 2.0f; }
+
+float palmarSurfaceXMm(const HandModel& model, float zMm) {
+    const HandDimensions& d = model.dimensions;
+    const float s = clamp01((zMm - d.palmWristZMm) / (palmKnuckleZMm(model) - d.palmWristZMm));
+    return d.palmCentreXMm + d.palmHalfThicknessWristMm +
+           (d.palmHalfThicknessKnucklesMm - d.palmHalfThicknessWristMm) * s;
 }
 
 float boneRadiusMm(const HandModel& model, Body body) {

@@ -110,6 +110,13 @@ struct HandDimensions {
     float littleMcpDropMm = 0.0f;
     // SPEC §1.4: CMC centre ≈ (10, 0.196·HB, 0.073·HL).
     glm::vec3 thumbCmcMm{10.0f, 0.196f * 85.0f, 0.073f * 190.0f};
+    // The palm's soft tissue [D: not in the SPEC]: a slab centred at x = palmCentreXMm whose
+    // half thickness tapers linearly from the wrist (z = palmWristZMm) to the knuckle line
+    // (2 mm past the middle MCP). The avatar's palm mesh and the palm contact check use it.
+    float palmCentreXMm = 1.5f;
+    float palmWristZMm = -30.0f;
+    float palmHalfThicknessWristMm = 15.0f;
+    float palmHalfThicknessKnucklesMm = 11.5f;
 };
 HandDimensions scaledHandDimensions(float handLengthMm = 190.0f, float handBreadthMm = 85.0f);
 
@@ -136,10 +143,15 @@ struct HandLimits {
     AngleRange thumbMcp{-10.0f, 60.0f};
     AngleRange thumbIp{-20.0f, 80.0f};
     // SPEC §1.4 [D]: ψ = ψ₀ + span·r·g, r = clamp((φ − start)/(φmax − start)), g = clamp(θ/full).
+    // The span is negative: a pronation, turning the pad toward the fingertips (docs/hand.md).
     float thumbTwistRestDeg = -90.0f;       // ψ₀
-    float thumbTwistSpanDeg = 45.0f;
+    float thumbTwistSpanDeg = -45.0f;
     float thumbTwistStartSpreadDeg = 58.0f;  // 10° + 60 % of the 80° spread range
     float thumbTwistFullBendDeg = 20.0f;
+    // CMC rotation R_z(−θ)·R_x(−φ)·R_z(θ)·R_z(ψ): θ and φ swing the metacarpal by the shortest
+    // rotation and only ψ rolls it (docs/hand.md). false = SPEC §1.4's literal
+    // R_z(−θ)·R_x(−φ)·R_z(ψ), whose θ also spins the thumb about its own axis.
+    bool thumbSpinFreeSwing = true;
 };
 
 // Built once. Holds the derived geometry: MCP positions, radiation and convergence twists.
@@ -228,6 +240,12 @@ std::array<RigidTransform, kBodyCount> restLocalTransforms(const HandModel& mode
 // where sides differ. Applying it twice gives the input back.
 RigidTransform mirrorToLeft(const RigidTransform& t);
 glm::vec3 mirrorToLeft(const glm::vec3& p);
+
+// The palm slab's palmar surface (x, palm frame) at height z: the wrist value below the
+// wrist, the knuckle value beyond the knuckle line (HandDimensions::palm*).
+float palmarSurfaceXMm(const HandModel& model, float zMm);
+// The palm slab's z extent: from the wrist to the knuckle line (2 mm past the middle MCP).
+float palmKnuckleZMm(const HandModel& model);
 
 // Radius of a bone's capsule for contact checks, 0 for the palm. [D] fingers: proximal P/2,
 // intermediate (P+D)/4, distal D/2; thumb: metacarpal and proximal from the MCP width,

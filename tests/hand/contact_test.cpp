@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -129,6 +131,31 @@ TEST(ContactTest, ForcedOverlapOfTwoFingersIsReported) {
                                               digitPairBit(Digit::Index, Digit::Middle));
     EXPECT_GT(rest.gapMm, overlap.gapMm + 3.0f);
     EXPECT_FALSE((static_cast<int>(rest.first) - 1) / 3 == 1 && (static_cast<int>(rest.second) - 1) / 3 == 2);
+}
+
+TEST(ContactTest, PalmClearanceMeasuresFromThePalmarSurface) {
+    const HandModel model = buildHandModel();
+    const float zMid = 0.5f * (model.dimensions.palmWristZMm + palmKnuckleZMm(model));
+    const float surface = palmarSurfaceXMm(model, zMid);
+    // The slab tapers: thicker at the wrist than at the knuckles.
+    EXPECT_GT(palmarSurfaceXMm(model, model.dimensions.palmWristZMm), palmarSurfaceXMm(model, palmKnuckleZMm(model)));
+    // A capsule lying across the palm 5 mm above its surface.
+    const Capsule across{{surface + 13.0f, 15.0f, zMid}, {surface + 13.0f, -30.0f, zMid}, 8.0f};
+    EXPECT_NEAR(palmClearanceMm(model, across, Side::Right), 5.0f, 1e-3f);
+    // Pushed 4 mm into the palm: negative.
+    const Capsule sunk{{surface + 4.0f, 15.0f, zMid}, {surface + 4.0f, -30.0f, zMid}, 8.0f};
+    EXPECT_NEAR(palmClearanceMm(model, sunk, Side::Right), -4.0f, 1e-3f);
+    // Only the part in front of the palm counts: a bone sloping down beyond the knuckles.
+    const float zKnuckles = palmKnuckleZMm(model);
+    const Capsule beyond{{surface + 20.0f, 0.0f, zKnuckles - 10.0f}, {0.0f, 0.0f, zKnuckles + 30.0f}, 5.0f};
+    const float atKnuckles = 0.75f * (surface + 20.0f);  // x where the axis crosses the knuckle line
+    EXPECT_NEAR(palmClearanceMm(model, beyond, Side::Right), atKnuckles - palmarSurfaceXMm(model, zKnuckles) - 5.0f, 1e-3f);
+    // Entirely past the knuckles or beside the hand: nothing to measure.
+    EXPECT_TRUE(std::isinf(palmClearanceMm(model, {{0, 0, zKnuckles + 5}, {0, 0, zKnuckles + 40}, 5.0f}, Side::Right)));
+    EXPECT_TRUE(std::isinf(palmClearanceMm(model, {{0, 80, zMid}, {0, 90, zMid}, 5.0f}, Side::Right)));
+    // The left hand's palm spans -y: the mirrored capsule gives the same clearance.
+    const Capsule mirrored{{across.start.x, -across.start.y, across.start.z}, {across.end.x, -across.end.y, across.end.z}, 8.0f};
+    EXPECT_NEAR(palmClearanceMm(model, mirrored, Side::Left), 5.0f, 1e-3f);
 }
 
 }  // namespace

@@ -201,29 +201,112 @@ TEST_F(HandModelTest, FingerTwistStaysWithinTenDegrees) {
 }
 
 TEST_F(HandModelTest, ThumbTwistFollowsSpreadAndBend) {
+    // The passive twist is a pronation (negative about the thumb's own axis: it turns the pad
+    // toward the fingers) that starts at ~60 % of the spread range, spans 45° and is scaled
+    // down below θ = 20°.
     const HandLimits& lim = model.limits;
-    auto twist = [&](float bend, float spread) {
+    auto pronation = [&](float bend, float spread) {
         HandControls c;
         c.thumb.bendDeg = bend;
         c.thumb.spreadDeg = spread;
-        return jointAngles(model, c).thumb.twistDeg - lim.thumbTwistRestDeg;
+        return lim.thumbTwistRestDeg - jointAngles(model, c).thumb.twistDeg;
     };
     const float sixtyPercent = lim.thumbSpread.minDeg + 0.6f * (lim.thumbSpread.maxDeg - lim.thumbSpread.minDeg);
     for (float bend : range(-25.0f, 120.0f, 29)) {
         for (float spread : range(10.0f, sixtyPercent - 1.0f, 20)) {
-            ASSERT_EQ(twist(bend, spread), 0.0f) << "no twist below ~60 % spread";
+            ASSERT_EQ(pronation(bend, spread), 0.0f) << "no twist below ~60 % spread";
         }
         // Monotone in spread above the start.
         float previous = 0.0f;
         for (float spread : range(sixtyPercent, 90.0f, 20)) {
-            const float t = twist(bend, spread);
+            const float t = pronation(bend, spread);
             ASSERT_GE(t, previous);
             previous = t;
         }
     }
-    for (float bend : range(20.0f, 120.0f, 10)) EXPECT_NEAR(twist(bend, 90.0f), 45.0f, 1e-3f);
-    for (float bend : range(0.0f, 19.0f, 19)) EXPECT_LT(twist(bend, 90.0f), 45.0f * (bend + 1.0f) / 20.0f);
-    EXPECT_LT(twist(10.0f, 90.0f), twist(25.0f, 90.0f));
+    for (float bend : range(20.0f, 120.0f, 10)) EXPECT_NEAR(pronation(bend, 90.0f), 45.0f, 1e-3f);
+    for (float bend : range(0.0f, 19.0f, 19)) EXPECT_LT(pronation(bend, 90.0f), 45.0f * (bend + 1.0f) / 20.0f);
+    EXPECT_LT(pronation(10.0f, 90.0f), pronation(25.0f, 90.0f));
+}
+
+// Flexion direction of the thumb's MCP (the metacarpal frame's +x) in the palm frame.
+glm::vec3 thumbFlexionDirection(const HandModel& model, float bendDeg, float spreadDeg) {
+    HandControls c;
+    c.thumb.bendDeg = bendDeg;
+    c.thumb.spreadDeg = spreadDeg;
+    const HandPose pose = forwardKinematics(model, c, Side::Right);
+    return pose.bodies[int(Body::ThumbMetacarpal)].rotation * glm::vec3(1.0f, 0.0f, 0.0f);
+}
+
+TEST_F(HandModelTest, ThumbSwingCarriesNoSpin) {
+    // θ and φ place the metacarpal by the shortest rotation from the palm's z-axis: they do not
+    // roll the thumb about its own axis, which only ψ does (docs/hand.md). Below the twist
+    // start ψ = ψ₀, so the frame is that swing followed by R_z(ψ₀).
+    const HandLimits& lim = model.limits;
+    for (float bend : range(-25.0f, 120.0f, 29)) {
+        for (float spread : range(10.0f, lim.thumbTwistStartSpreadDeg - 1.0f, 12)) {
+            HandControls c;
+            c.thumb.bendDeg = bend;
+            c.thumb.spreadDeg = spread;
+            const glm::quat actual = forwardKinematics(model, c, Side::Right).bodies[int(Body::ThumbMetacarpal)].rotation;
+            const float t = glm::radians(bend), p = glm::radians(spread);
+            const glm::vec3 direction(std::sin(p) * std::sin(t), std::sin(p) * std::cos(t), std::cos(p));
+            // Shortest rotation from +z to the metacarpal direction: by φ about z × direction.
+            const glm::vec3 axis = glm::normalize(glm::cross(glm::vec3(0.0f, 0.0f, 1.0f), direction));
+            const glm::quat expected = glm::angleAxis(p, axis) *
+                                       glm::angleAxis(glm::radians(lim.thumbTwistRestDeg), glm::vec3(0.0f, 0.0f, 1.0f));
+            ASSERT_GT(std::abs(glm::dot(actual, expected)), 1.0f - 1e-6f) << bend << " " << spread;
+        }
+    }
+}
+
+TEST_F(HandModelTest, ThumbFlexesAcrossThePalmAtEveryBend) {
+    // Bending the thumb's MCP carries it toward the little finger whatever θ is, never straight
+    // into the palm (with the SPEC's literal chain, θ = 90° turned the flexion into the palm).
+    for (float bend : range(-25.0f, 120.0f, 29)) {
+        for (float spread : range(10.0f, model.limits.thumbTwistStartSpreadDeg - 1.0f, 12)) {
+            const glm::vec3 flexion = thumbFlexionDirection(model, bend, spread);
+            ASSERT_LT(flexion.y, -0.5f) << bend << " " << spread;
+            ASSERT_GT(flexion.x, -0.25f) << bend << " " << spread;
+        }
+    }
+    HandModel literal = model;
+    literal.limits.thumbSpinFreeSwing = false;
+    EXPECT_LT(thumbFlexionDirection(literal, 90.0f, 15.0f).x, -0.9f) << "the literal chain flexes into the palm";
+}
+
+TEST_F(HandModelTest, ThumbPronationTurnsThePadTowardTheFingertips) {
+    // Opposition: at full spread the passive twist turns the thumb's pad (its flexion side)
+    // toward the fingertips of the open hand, compared with the same posture untwisted. (Near
+    // θ = 20° the spread thumb points out sideways and the same roll turns its pad toward the
+    // back of the hand rather than the fingertips, so the sweep starts at 30°.)
+    HandModel untwisted = model;
+    untwisted.limits.thumbTwistSpanDeg = 0.0f;
+    const HandPose open = forwardKinematics(model, HandControls{}, Side::Right);
+    for (float bend : range(30.0f, 120.0f, 9)) {
+        HandControls c;
+        c.thumb.bendDeg = bend;
+        c.thumb.spreadDeg = 90.0f;
+        const glm::vec3 mcp = forwardKinematics(model, c, Side::Right).bodies[int(Body::ThumbProximal)].position;
+        const glm::vec3 towardFingertips = glm::normalize(open.tips[int(Digit::Middle)] - mcp);
+        const float twisted = glm::dot(thumbFlexionDirection(model, bend, 90.0f), towardFingertips);
+        const float plain = glm::dot(thumbFlexionDirection(untwisted, bend, 90.0f), towardFingertips);
+        EXPECT_GT(twisted, plain + 0.05f) << bend << ": " << twisted << " vs " << plain;
+    }
+}
+
+TEST_F(HandModelTest, LiteralSpecChainIsAvailable) {
+    // thumbSpinFreeSwing = false gives SPEC §1.4's chain R_z(−θ)·R_x(−φ)·R_z(ψ) exactly.
+    HandModel literal = model;
+    literal.limits.thumbSpinFreeSwing = false;
+    HandControls c;
+    c.thumb = {70.0f, 40.0f, 0.0f, 0.0f};
+    const JointAngles a = jointAngles(literal, c);
+    const glm::quat expected = glm::angleAxis(glm::radians(-70.0f), glm::vec3(0, 0, 1)) *
+                               glm::angleAxis(glm::radians(-40.0f), glm::vec3(1, 0, 0)) *
+                               glm::angleAxis(glm::radians(a.thumb.twistDeg), glm::vec3(0, 0, 1));
+    const glm::quat actual = forwardKinematics(literal, a, Side::Right).bodies[int(Body::ThumbMetacarpal)].rotation;
+    EXPECT_GT(std::abs(glm::dot(actual, expected)), 1.0f - 1e-6f);
 }
 
 TEST_F(HandModelTest, ThumbMetacarpalPointsAlongSphericalDirection) {

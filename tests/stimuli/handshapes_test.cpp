@@ -86,6 +86,46 @@ TEST_F(HandshapeLibraryTest, NoTwoDigitsInterpenetrateInAnyShape) {
     }
 }
 
+TEST_F(HandshapeLibraryTest, NoDigitSinksIntoThePalm) {
+    // Every bone but the first of each digit (whose base is inside the hand by construction)
+    // stays in front of the palm's soft tissue, within the same tolerance.
+    for (const Handshape& shape : library.shapes) {
+        for (Side side : {Side::Right, Side::Left}) {
+            const hand::HandPose pose = hand::forwardKinematics(model, shape.controls, side);
+            const auto capsules = hand::boneCapsules(model, pose);
+            for (int body = 1; body < hand::kBodyCount; ++body) {
+                if ((body - 1) % 3 == 0) continue;
+                EXPECT_GE(hand::palmClearanceMm(model, capsules[body], side), -kInterpenetrationToleranceMm)
+                    << shape.name << ": " << hand::boneName(side, static_cast<hand::Body>(body)) << " inside the palm";
+            }
+        }
+    }
+}
+
+// M and N: the folded fingers lie over the thumb, whose tip comes out between the last folded
+// finger and the next one: between the palm and the folded fingers' middle phalanges.
+void expectThumbUnderFolded(const hand::HandModel& model, const Handshape& shape, int foldedFingers) {
+    const hand::HandPose pose = hand::forwardKinematics(model, shape.controls, Side::Right);
+    const auto capsules = hand::boneCapsules(model, pose);
+    const glm::vec3 tip = pose.tips[int(Digit::Thumb)];
+    // Between the MCPs of the last folded finger and the next (fingers 0 = index .. 3 = little).
+    const float yFolded = model.mcpPositionMm[foldedFingers - 1].y, yNext = model.mcpPositionMm[foldedFingers].y;
+    EXPECT_LT(tip.y, yFolded) << shape.name;
+    EXPECT_GT(tip.y, yNext) << shape.name;
+    EXPECT_LT(tip.z, hand::palmKnuckleZMm(model)) << shape.name << ": below the knuckle line";
+    EXPECT_GE(hand::palmClearanceMm(model, capsules[int(hand::Body::ThumbDistal)], Side::Right), 0.0f) << shape.name;
+    for (int f = 0; f < foldedFingers; ++f) {
+        const hand::Capsule& middlePhalanx = capsules[hand::firstBodyOf(static_cast<Digit>(f + 1)) + 1];
+        EXPECT_GT(std::min(middlePhalanx.start.x, middlePhalanx.end.x), tip.x)
+            << shape.name << ": finger " << f + 1 << " is not over the thumb";
+    }
+}
+
+TEST_F(HandshapeLibraryTest, MAndNFoldTheirFingersOverTheThumb) {
+    expectThumbUnderFolded(model, library.at("M"), 3);
+    expectThumbUnderFolded(model, library.at("N"), 2);
+}
+
 TEST_F(HandshapeLibraryTest, AbductionIsStoredAsSpreadAfterRadiation) {
     // SPEC §1.6: 5 = abduction (−20°, 0°, 12°, 25°), σ = α − ρ with ρ = (−8°, 0°, 4°, 14°).
     const hand::HandControls& five = library.at("5").controls;
