@@ -95,7 +95,7 @@ void registerAvatarCommands(Commands& commands) {
     // handshapes --gallery
     struct GalleryOptions {
         AvatarSource source;
-        std::string gallery, shapesFile, device;
+        std::string gallery, shapesFile, device, view = "palm";
         std::uint32_t columns = 7, cell = 200, msaa = 4;
     };
     auto g = std::make_shared<GalleryOptions>();
@@ -105,16 +105,20 @@ void registerAvatarCommands(Commands& commands) {
     shapes->add_option("--shapes", g->shapesFile, "Handshape file (default: SCENES/handshapes.json)");
     shapes->add_option("--columns", g->columns, "Shapes per row")->check(CLI::Range(1u, 64u));
     shapes->add_option("--cell", g->cell, "Size of one cell in pixels")->check(CLI::Range(32u, 1024u));
+    shapes->add_option("--view", g->view,
+                       "Viewpoint around the hand: palm (default), thumb, little, back, top, or AZIMUTH,ELEVATION in "
+                       "degrees (azimuth +90 = thumb side, elevation + = from above)");
     shapes->add_option("--device", g->device, "Vulkan device (name substring or index; see `signstim devices`)");
     shapes->add_option("--msaa", g->msaa, "Multisampling: 1 or 4");
     addAvatarOptions(shapes, g->source);
     shapes->callback([g] {
+        const GalleryView view = parseGalleryView(g->view);
         const render::Scene scene = loadAvatar(g->source);
         const SignerRig rig(scene, mappingOf(g->source));
         const stimuli::HandshapeLibrary library =
             stimuli::loadHandshapes(stimuli::handshapesFile(g->shapesFile, g->source.scenesDir), rig.handModel());
         const std::uint32_t rows = static_cast<std::uint32_t>((library.shapes.size() + g->columns - 1) / g->columns);
-        renderToFile(scene, [&](int handle) { return galleryFrame(scene, rig, handle, library, g->columns); },
+        renderToFile(scene, [&](int handle) { return galleryFrame(scene, rig, handle, library, g->columns, view); },
                      g->columns * g->cell, rows * g->cell, g->device, g->msaa, g->gallery);
         std::printf("%s: %zu handshapes\n", g->gallery.c_str(), library.shapes.size());
     });

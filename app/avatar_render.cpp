@@ -1,6 +1,11 @@
 #include "app/avatar_render.hpp"
 
+#include "app/cli_values.hpp"
+
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
 
 #include <vector>
 
@@ -29,8 +34,25 @@ render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect) {
     return camera;
 }
 
+GalleryView parseGalleryView(const std::string& text) {
+    if (text == "palm") return {0.0f, 0.0f};
+    if (text == "thumb") return {90.0f, 0.0f};
+    if (text == "little") return {-90.0f, 0.0f};
+    if (text == "back") return {180.0f, 0.0f};
+    if (text == "top") return {0.0f, 60.0f};
+    if (text.find_first_of("0123456789") == std::string::npos) {
+        throw commandLineError("--view", "expected palm, thumb, little, back, top or AZIMUTH,ELEVATION in degrees, got '" +
+                                             text + "'");
+    }
+    const std::vector<float> values = parseNumbers(text, "--view", 2, 2);
+    GalleryView view{values[0], values[1]};
+    requireInRange(view.elevationDeg, -89.0f, 89.0f, "--view elevation");
+    return view;
+}
+
 render::Frame galleryFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,
-                           const stimuli::HandshapeLibrary& library, std::uint32_t columns) {
+                           const stimuli::HandshapeLibrary& library, std::uint32_t columns,
+                           const GalleryView& galleryView) {
     render::Frame frame;
     frame.columns = std::max(1u, columns);
     frame.rows = static_cast<std::uint32_t>((library.shapes.size() + frame.columns - 1) / frame.columns);
@@ -44,7 +66,11 @@ render::Frame galleryFrame(const render::Scene& avatar, const SignerRig& rig, in
     render::Camera camera;
     camera.verticalFovDegrees = 28.0f;
     camera.target = center;
-    camera.eye = center + glm::vec3(0.0f, 0.0f, 0.55f);
+    // Straight at the palm (+z, the signer's forward) unless the view orbits elsewhere; the
+    // presented palm's thumb points to +x.
+    const float azimuth = glm::radians(galleryView.azimuthDeg), elevation = glm::radians(galleryView.elevationDeg);
+    camera.eye = center + 0.55f * glm::vec3(std::sin(azimuth) * std::cos(elevation), std::sin(elevation),
+                                            std::cos(azimuth) * std::cos(elevation));
     for (const stimuli::Handshape& shape : library.shapes) {
         posture.rightHand = shape.controls;
         render::View view;

@@ -22,10 +22,23 @@ render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t
 // Waist-up view of a signer whose chest is at `chestWorld` (metres), for aspect w/h.
 render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect);
 
-// A grid of every handshape in `library` on the right hand, shown palm-forward beside the
-// shoulder, each labelled with its name. `sceneHandle` is the avatar's Renderer handle.
+// Where the gallery camera looks from: an orbit around the presented right hand, degrees.
+// Azimuth turns about the vertical (+90 = from the thumb side, -90 = from the little-finger
+// side, 180 = the back of the hand); elevation raises the camera (+ = from above).
+struct GalleryView {
+    float azimuthDeg = 0.0f;
+    float elevationDeg = 0.0f;
+};
+// Named views of `handshapes --view`: palm, thumb, little, back, top; or "AZ,EL" in degrees.
+// Throws InputError naming --view for anything else.
+GalleryView parseGalleryView(const std::string& text);
+
+// A grid of every handshape in `library` on the right hand, presented palm-forward beside the
+// shoulder, each labelled with its name, all seen from `view` (default: straight at the palm).
+// `sceneHandle` is the avatar's Renderer handle.
 render::Frame galleryFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,
-                           const stimuli::HandshapeLibrary& library, std::uint32_t columns);
+                           const stimuli::HandshapeLibrary& library, std::uint32_t columns,
+                           const GalleryView& view = {});
 
 // The signer in one posture, waist-up.
 render::Frame postureFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,

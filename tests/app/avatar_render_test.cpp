@@ -5,6 +5,7 @@
 #include "app/avatar_builder.hpp"
 #include "app/avatar_render.hpp"
 #include "app/signer_pose.hpp"
+#include "common/error.hpp"
 #include "renderer/gltf_loader.hpp"
 #include "renderer/gltf_writer.hpp"
 #include "renderer/renderer.hpp"
@@ -12,7 +13,10 @@
 #include "tests/renderer/vk_golden.hpp"
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -72,6 +76,29 @@ TEST(AvatarGolden, HandshapeGallery) {
     expectNoValidationMessages(renderer);
     const std::string problem = render::testing::compareWithGolden(image, "../../app/golden/handshape_gallery");
     EXPECT_TRUE(problem.empty()) << problem;
+}
+
+TEST(AvatarGallery, ViewsOrbitTheHandAtTheSameDistance) {
+    const render::Scene scene = render::loadGltf(kScenes + "/avatar/signer.glb");
+    const app::SignerRig rig(scene);
+    const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", rig.handModel());
+    const auto offset = [&](const std::string& view) {
+        const render::Frame frame = app::galleryFrame(scene, rig, 0, library, 7, app::parseGalleryView(view));
+        return frame.views.at(0).camera.eye - frame.views.at(0).camera.target;
+    };
+    const glm::vec3 palm = offset("palm"), thumb = offset("thumb"), back = offset("back"), top = offset("top");
+    EXPECT_NEAR(glm::length(palm - glm::vec3(0.0f, 0.0f, 0.55f)), 0.0f, 1e-6f) << "the default view is unchanged";
+    EXPECT_NEAR(glm::length(thumb - glm::vec3(0.55f, 0.0f, 0.0f)), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(back - glm::vec3(0.0f, 0.0f, -0.55f)), 0.0f, 1e-5f);
+    EXPECT_GT(top.y, 0.4f);
+    EXPECT_NEAR(glm::length(top), 0.55f, 1e-5f);
+    EXPECT_NEAR(glm::length(offset("-45,20") - glm::vec3(0.55f * std::sin(glm::radians(-45.0f)) * std::cos(glm::radians(20.0f)),
+                                                           0.55f * std::sin(glm::radians(20.0f)),
+                                                           0.55f * std::cos(glm::radians(-45.0f)) * std::cos(glm::radians(20.0f)))),
+                0.0f, 1e-5f);
+    for (const char* bad : {"side", "10", "1,2,3", "0,95", "abc,def"}) {
+        EXPECT_THROW(app::parseGalleryView(bad), InputError) << bad;
+    }
 }
 
 TEST(AvatarGolden, PosedSigner) {
