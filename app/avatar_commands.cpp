@@ -32,24 +32,20 @@ void addAvatarOptions(CLI::App* command, AvatarSource& o) {
                         "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ beside signstim, else the "
                         "source tree's)");
     command->add_option("--avatar", o.avatarFile,
-                        "Your own avatar (.glb/.gltf): a T-pose skeleton facing +Z with VRM humanoid bone "
-                        "names (default: SCENES/avatar/signer.glb)");
+                        "Your own avatar (.glb/.gltf, +Y up) with VRM humanoid bone names; any rest pose (T or "
+                        "A) and facing (default: SCENES/avatar/signer.glb)");
     command->add_option("--bone-map", o.boneMapFile,
                         "JSON {\"vrmBoneName\": \"yourNodeName\", ...} for an avatar without VRM names");
 }
+
+BoneMapping mappingOf(const AvatarSource& o) { return o.boneMapFile.empty() ? BoneMapping{} : loadBoneMapping(o.boneMapFile); }
 
 render::Scene loadAvatar(const AvatarSource& o) {
     const std::filesystem::path path = o.avatarFile.empty()
                                            ? defaultAvatarPath(stimuli::resolveScenesDir(o.scenesDir))
                                            : std::filesystem::path(o.avatarFile);
-    if (!std::filesystem::exists(path))
-        throw InputError(path.string(), 0, "--avatar", "no such file");
-    render::Scene scene = render::loadGltf(path);
-    scene.sourceName = path.string();
-    return scene;
+    return loadSignerAvatar(path, mappingOf(o));
 }
-
-BoneMapping mappingOf(const AvatarSource& o) { return o.boneMapFile.empty() ? BoneMapping{} : loadBoneMapping(o.boneMapFile); }
 
 // An extra hand rotation given as a rotation vector in degrees in the signing-space frame.
 glm::quat signingSpaceRotation(const glm::vec3& rotationVectorDeg) {

@@ -1,6 +1,7 @@
 #include "app/signer_pose.hpp"
 
 #include "common/error.hpp"
+#include "renderer/gltf_loader.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -9,6 +10,7 @@
 #include <glm/mat3x3.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -34,6 +36,30 @@ glm::quat mirrorHandRotation(const glm::quat& q) {
 }
 
 std::string sideName(hand::Side side) { return side == hand::Side::Right ? "right" : "left"; }
+
+// The node of a VRM bone: through `mapping` when it names one, else the VRM name itself.
+int findBone(const render::Scene& scene, const BoneMapping& mapping, const std::string& vrm) {
+    const auto it = mapping.find(vrm);
+    return scene.findNode(it != mapping.end() ? it->second : vrm);
+}
+
+// The shortest rotation taking direction a onto direction b.
+glm::quat swingBetween(glm::vec3 a, glm::vec3 b) {
+    a = glm::normalize(a);
+    b = glm::normalize(b);
+    const float c = glm::dot(a, b);
+    if (c < -1.0f + 1e-6f) {  // opposite: half a turn about any perpendicular axis
+        glm::vec3 axis = glm::cross(a, glm::vec3(1.0f, 0.0f, 0.0f));
+        if (glm::length(axis) < 1e-3f) axis = glm::cross(a, glm::vec3(0.0f, 1.0f, 0.0f));
+        return glm::angleAxis(180.0f * kDeg, glm::normalize(axis));
+    }
+    const glm::vec3 axis = glm::cross(a, b);
+    return glm::normalize(glm::quat(1.0f + c, axis.x, axis.y, axis.z));  // half-angle form
+}
+
+// A rest pose this close to the canonical one is the canonical one: the default signer is
+// built in it and differs only by float rounding, which must not perturb its output.
+constexpr float kRestToleranceDeg = 0.05f;
 
 glm::quat rotationOf(const glm::mat4& m) {
     return glm::normalize(glm::quat_cast(glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])),
@@ -96,12 +122,54 @@ glm::quat handFrameFromSigningSpace(const glm::quat& orientation) {
     return glm::normalize(glm::quat_cast(s * glm::mat3_cast(orientation) * flipY));
 }
 
+float faceAvatarForward(render::Scene& scene, const BoneMapping& mapping) {
+    const int left = findBone(scene, mapping, "leftUpperArm"), right = findBone(scene, mapping, "rightUpperArm");
+    if (left < 0 || right < 0) return 0.0f;
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(scene, render::restPose(scene), world);
+    const glm::vec3 across = glm::vec3(world[left][3]) - glm::vec3(world[right][3]);  // toward the signer's left
+    const float width = glm::length(across);
+    if (!(width > 1e-6f) || std::abs(across.y) > 0.5f * width) {
+        throw InputError(scene.sourceName, 0, "skeleton",
+                         "the shoulders are not level in the rest pose: the avatar must stand upright with +Y up "
+                         "(glTF's convention)");
+    }
+    const int hips = findBone(scene, mapping, "hips"), head = findBone(scene, mapping, "head");
+    if (hips >= 0 && head >= 0) {
+        const glm::vec3 up = glm::vec3(world[head][3]) - glm::vec3(world[hips][3]);
+        if (!(up.y > 0.5f * glm::length(up))) {
+            throw InputError(scene.sourceName, 0, "skeleton",
+                             "the head is not above the hips in the rest pose: the avatar must stand upright with +Y "
+                             "up (glTF's convention)");
+        }
+    }
+    const glm::vec3 forward = glm::cross(across, glm::vec3(0.0f, 1.0f, 0.0f));
+    const float yaw = std::atan2(forward.x, forward.z);  // 0 when facing +Z
+    if (std::abs(yaw) < 1.0f * kDeg) return 0.0f;
+    const glm::quat turn = glm::angleAxis(-yaw, glm::vec3(0.0f, 1.0f, 0.0f));
+    for (render::Node& n : scene.nodes) {
+        if (n.parent >= 0) continue;
+        if (n.restMatrix) {
+            n.restMatrix = glm::mat4_cast(turn) * *n.restMatrix;
+        } else {
+            n.rest.translation = turn * n.rest.translation;
+            n.rest.rotation = glm::normalize(turn * n.rest.rotation);
+        }
+    }
+    return -yaw / kDeg;
+}
+
+render::Scene loadSignerAvatar(const std::filesystem::path& file, const BoneMapping& mapping, const std::string& flag) {
+    if (!std::filesystem::exists(file)) throw InputError(file.string(), 0, flag, "no such file");
+    render::Scene scene = render::loadGltf(file);
+    scene.sourceName = file.string();
+    faceAvatarForward(scene, mapping);
+    return scene;
+}
+
 SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, const hand::HandModel& handModel)
     : scene_(&scene), handModel_(handModel) {
-    const auto lookup = [&](const std::string& vrm) {
-        const auto it = mapping.find(vrm);
-        return scene.findNode(it != mapping.end() ? it->second : vrm);
-    };
+    const auto lookup = [&](const std::string& vrm) { return findBone(scene, mapping, vrm); };
     std::vector<std::string> missing;
     for (const std::string& name : requiredSignerBones())
         if (lookup(name) < 0) missing.push_back(name);
@@ -135,6 +203,7 @@ SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, con
     render::computeWorldTransforms(scene, restPose, world);
     restWorldRotation_.resize(world.size());
     for (std::size_t i = 0; i < world.size(); ++i) restWorldRotation_[i] = rotationOf(world[i]);
+    measureRestPose(world);
     const auto position = [&](const std::string& vrm) { return glm::vec3(world[node(vrm)][3]); };
 
     const glm::vec3 leftShoulder = position("leftUpperArm"), rightShoulder = position("rightUpperArm");
@@ -154,6 +223,68 @@ SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, con
     gaze_.eyesMm = (position("head") - bodyOriginM_) * kMToMm + glm::vec3(0.0f, 115.0f, 78.0f);
     if (bones_.count("leftEye") && bones_.count("rightEye"))
         gaze_.eyesMm = (0.5f * (position("leftEye") + position("rightEye")) - bodyOriginM_) * kMToMm;
+}
+
+void SignerRig::measureRestPose(const std::vector<glm::mat4>& restWorld) {
+    const glm::quat identity(1.0f, 0.0f, 0.0f, 0.0f);
+    const auto at = [&](int node) { return glm::vec3(restWorld[node][3]); };
+    const auto setCorrection = [&](const std::string& vrm, glm::quat delta) {
+        const auto it = bones_.find(vrm);
+        if (it == bones_.end()) return;
+        if (hand::rotationAngleDeg(delta, identity) < kRestToleranceDeg) delta = identity;
+        it->second.restCorrection = delta;
+    };
+    for (hand::Side side : {hand::Side::Right, hand::Side::Left}) {
+        const std::string s = sideName(side);
+        // Arms: canonically straight out sideways (T-pose); each bone toward the next joint,
+        // after its parent's correction.
+        const glm::vec3 outward(side == hand::Side::Right ? -1.0f : 1.0f, 0.0f, 0.0f);
+        const glm::vec3 shoulder = at(node(s + "UpperArm")), elbow = at(node(s + "LowerArm")),
+                        wrist = at(node(s + "Hand"));
+        const glm::quat upper = swingBetween(outward, elbow - shoulder);
+        const glm::quat lower = swingBetween(upper * outward, wrist - elbow) * upper;
+        setCorrection(s + "UpperArm", upper);
+        for (const char* part : {"LowerArm", "ForearmTwistMid", "ForearmTwistWrist"}) setCorrection(s + part, lower);
+
+        // Hand: its whole frame, from the middle knuckle (along) and the little-to-index
+        // knuckle line (across), so a palm turned down in the rest pose is measured too.
+        const hand::HandPose rest = hand::forwardKinematics(handModel_, hand::HandControls{}, side);
+        const glm::quat frame = hand::restFrame(side);
+        const auto knuckle = [&](hand::Digit digit) { return rest.bodies[hand::firstBodyOf(digit)].position; };
+        const auto knuckleNode = [&](hand::Digit digit) {
+            return at(node(std::string(hand::boneName(side, static_cast<hand::Body>(hand::firstBodyOf(digit))))));
+        };
+        const glm::quat canonicalHand = frameFromAxes(frame * (knuckle(hand::Digit::Index) - knuckle(hand::Digit::Little)),
+                                                      frame * knuckle(hand::Digit::Middle));
+        const glm::quat actualHand = frameFromAxes(knuckleNode(hand::Digit::Index) - knuckleNode(hand::Digit::Little),
+                                                   knuckleNode(hand::Digit::Middle) - wrist);
+        const glm::quat handCorrection = glm::normalize(actualHand * glm::inverse(canonicalHand));
+        setCorrection(s + "Hand", handCorrection);
+
+        // Digits: each bone toward the next joint (the last bone toward its first child node,
+        // such as a VRM "_end" leaf; without one it keeps its parent bone's correction).
+        const auto info = hand::handBones(side);
+        for (int digit = 0; digit < hand::kDigitCount; ++digit) {
+            const int first = hand::firstBodyOf(static_cast<hand::Digit>(digit));
+            glm::quat parent = handCorrection;
+            for (int k = 0; k < 3; ++k) {
+                const int body = first + k;
+                const int n = node(std::string(info[body].name));
+                const glm::vec3 canonicalNext = k < 2 ? rest.bodies[body + 1].position : rest.tips[digit];
+                const glm::vec3 canonicalDirection = frame * (canonicalNext - rest.bodies[body].position);
+                std::optional<glm::vec3> actualNext;
+                if (k < 2) {
+                    actualNext = at(node(std::string(info[body + 1].name)));
+                } else if (!scene_->nodes[n].children.empty()) {
+                    actualNext = at(scene_->nodes[n].children.front());
+                }
+                const glm::quat correction =
+                    actualNext ? swingBetween(parent * canonicalDirection, *actualNext - at(n)) * parent : parent;
+                setCorrection(std::string(info[body].name), correction);
+                parent = correction;
+            }
+        }
+    }
 }
 
 int SignerRig::node(const std::string& vrmName) const {
@@ -222,7 +353,8 @@ render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report, c
         const auto it = bones_.find(name);
         if (it == bones_.end()) continue;
         const Bone& bone = it->second;
-        desired[bone.node] = glm::normalize(q * glm::inverse(bone.canonicalRest) * restWorldRotation_[bone.node]);
+        desired[bone.node] =
+            glm::normalize(q * glm::inverse(bone.restCorrection * bone.canonicalRest) * restWorldRotation_[bone.node]);
     }
 
     render::Pose pose = render::restPose(scene);

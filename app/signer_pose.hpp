@@ -3,10 +3,14 @@
 // (arm IK) and an optional gaze point -> a render::Pose for the avatar's Scene.
 //
 // Works for the default avatar (app/avatar_builder.hpp) and for any glTF whose skeleton uses
-// VRM humanoid bone names (or a mapping file), in a T-pose facing +Z. Rotations are
-// retargeted through the rest pose: world(bone) = canonical(bone) · canonicalRest⁻¹ ·
-// restWorld(bone), so the user's own bone axes do not matter; the arm lengths and shoulder
-// positions are read from the skeleton.
+// VRM humanoid bone names (or a mapping file), +Y up. Rotations are retargeted through the
+// rest pose: world(bone) = canonical(bone) · (Δ(bone) · canonicalRest(bone))⁻¹ · restWorld(bone),
+// so the user's own bone axes do not matter. canonicalRest is the bone's frame in the
+// canonical rest pose (T-pose facing +Z, palms down-forward as the default signer, fingers
+// straight); Δ turns it onto the avatar's own rest pose, measured from the skeleton: A-pose
+// arms, palms down, curled or splayed fingers are all taken as they are. The arm lengths and
+// shoulder positions are read from the skeleton. An avatar facing another way (VRM 0.x faces
+// -Z) is turned to face +Z first by faceAvatarForward().
 //
 // Frames. Wrist targets and gaze points are given in the body frame of hand/arm_ik.hpp
 // (mm, +x the signer's LEFT, +y up, +z forward, origin at the chest). Verb data lives in the
@@ -53,6 +57,19 @@ glm::quat bodyFromSigningSpace(const glm::quat& rotation);
 // face the opposite way.)
 glm::quat handFrameFromSigningSpace(const glm::quat& orientation);
 
+// Turns the avatar about +Y so that it faces +Z (the default signer's and every camera's
+// assumption), judged from its rest skeleton: forward = (left shoulder − right shoulder) × up.
+// Applied to the root nodes; does nothing when it already faces +Z within 1°, or when the
+// shoulder bones are missing (SignerRig then reports them). Returns the turn in degrees.
+// Throws InputError naming the scene when the shoulders are not level or the head is not
+// above the hips (not standing with +Y up).
+float faceAvatarForward(render::Scene& scene, const BoneMapping& mapping = {});
+
+// Loads a signer avatar (.glb/.gltf) for SignerRig: the file must exist (InputError naming it
+// and `flag` otherwise), its scene is named after the file, and it is turned to face +Z.
+render::Scene loadSignerAvatar(const std::filesystem::path& file, const BoneMapping& mapping = {},
+                               const std::string& flag = "--avatar");
+
 struct SignerPosture {
     hand::HandControls rightHand, leftHand;
     // Body frame. Absent: the hand rests in front of the waist (restingTarget()).
@@ -91,7 +108,9 @@ private:
     struct Bone {
         int node = -1;
         glm::quat canonicalRest{1.0f, 0.0f, 0.0f, 0.0f};
+        glm::quat restCorrection{1.0f, 0.0f, 0.0f, 0.0f};  // Δ: canonical rest -> this avatar's rest
     };
+    void measureRestPose(const std::vector<glm::mat4>& restWorld);
     int node(const std::string& vrmName) const;
 
     const render::Scene* scene_;

@@ -47,7 +47,7 @@ struct VerbOptions {
     std::string fps = "30";
     std::uint32_t msaa = 4;
     std::string device;
-    std::string avatarFile;
+    std::string avatarFile, boneMapFile;
     bool quiet = false;
 };
 
@@ -85,7 +85,7 @@ void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, co
     const std::uint32_t width = size.width, height = size.height;
     const render::FrameRate frameRate = render::parseFrameRate(o.fps);
     const std::filesystem::path out(o.outPath);
-    const Signer signer(scenesDir, o.avatarFile);
+    const Signer signer(scenesDir, o.avatarFile, o.boneMapFile.empty() ? BoneMapping{} : loadBoneMapping(o.boneMapFile));
     const VerbClip clip(signer.rig(), signer.shapes(), performance);
     ensureWritableDirectory(out.has_extension() ? out.parent_path() : out);
 
@@ -163,7 +163,10 @@ void registerVerbCommands(Commands& commands) {
         verb->add_option("--fps", o->fps, "Frame rate: 30, 25, 30000/1001 ...")->capture_default_str();
         verb->add_option("--msaa", o->msaa, "Multisampling: 1 or 4")->capture_default_str();
         verb->add_option("--device", o->device, "Vulkan device: name substring or index (see `signstim devices`)");
-        verb->add_option("--avatar", o->avatarFile, "Your own avatar (.glb/.gltf with VRM humanoid bone names)");
+        verb->add_option("--avatar", o->avatarFile,
+                         "Your own avatar (.glb/.gltf, +Y up) with VRM humanoid bone names; any rest pose and facing");
+        verb->add_option("--bone-map", o->boneMapFile,
+                         "JSON {\"vrmBoneName\": \"yourNodeName\", ...} for an avatar without VRM names");
         verb->add_flag("--quiet", o->quiet, "No progress on stderr");
         verb->add_option("--models", o->modelsFile, "Trained models (default: SCENES/models/verb_models.json)");
         addCommonOptions(verb, o);

@@ -49,9 +49,10 @@ hand::ArmTarget blendTargets(const hand::ArmTarget& a, const hand::ArmTarget& b,
 
 }  // namespace
 
-Signer::Signer(const std::filesystem::path& scenesDir, const std::filesystem::path& avatarFile)
-    : avatar_(render::loadGltf(avatarFile.empty() ? defaultAvatarPath(scenesDir) : avatarFile)),
-      rig_(avatar_),
+Signer::Signer(const std::filesystem::path& scenesDir, const std::filesystem::path& avatarFile,
+               const BoneMapping& mapping)
+    : avatar_(loadSignerAvatar(avatarFile.empty() ? defaultAvatarPath(scenesDir) : avatarFile, mapping)),
+      rig_(avatar_, mapping),
       shapes_(stimuli::loadHandshapes(scenesDir / "handshapes.json", rig_.handModel())) {}
 
 void StillCapturingSink::push(render::Image&& frame) {

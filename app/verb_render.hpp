@@ -26,7 +26,8 @@ class Signer {
 public:
     // scenes/avatar/signer.glb unless `avatarFile` is given; scenes/handshapes.json.
     // Throws InputError naming the file for any problem.
-    explicit Signer(const std::filesystem::path& scenesDir, const std::filesystem::path& avatarFile = {});
+    explicit Signer(const std::filesystem::path& scenesDir, const std::filesystem::path& avatarFile = {},
+                    const BoneMapping& mapping = {});
     Signer(const Signer&) = delete;
     Signer& operator=(const Signer&) = delete;
 

@@ -10,13 +10,18 @@
 #include "renderer/gltf_writer.hpp"
 #include "renderer/renderer.hpp"
 #include "stimuli/handshapes.hpp"
+#include "tests/app/avatar_variants.hpp"
 #include "tests/renderer/vk_golden.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -99,6 +104,46 @@ TEST(AvatarGallery, ViewsOrbitTheHandAtTheSameDistance) {
     for (const char* bad : {"side", "10", "1,2,3", "0,95", "abc,def"}) {
         EXPECT_THROW(app::parseGalleryView(bad), InputError) << bad;
     }
+}
+
+TEST(AvatarGallery, AnAvatarInAnotherRestPoseAndFacingRendersTheSameSigning) {
+    // The default signer written out in an A-pose with a palm turned down and curled fingers,
+    // facing -Z (as VRM 0.x avatars do), then loaded as a user's avatar: the same posture must
+    // render as it does on the default signer (same skin, so the same image up to rounding).
+    render::Scene changed = render::loadGltf(kScenes + "/avatar/signer.glb");
+    test::useAnotherRestPose(changed);
+    test::turnRoots(changed, glm::angleAxis(glm::radians(180.0f), glm::vec3(0, 1, 0)));
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "signstim_turned_signer.glb";
+    render::writeGltf(changed, file);
+    const render::Scene user = app::loadSignerAvatar(file);
+    std::filesystem::remove(file);
+    const render::Scene standard = render::loadGltf(kScenes + "/avatar/signer.glb");
+    const app::SignerRig userRig(user), standardRig(standard);
+    const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", standardRig.handModel());
+    app::SignerPosture posture;
+    posture.rightHand = library.at("B").controls;
+    posture.leftHand = library.at("5").controls;
+    posture.rightWrist = standardRig.presentingTarget(hand::Side::Right);
+    posture.leftWrist = hand::ArmTarget{{160, -40, 260}, glm::angleAxis(glm::radians(30.0f), glm::vec3(0, 1, 0))};
+    std::array<render::Image, 2> images;
+    for (int i = 0; i < 2; ++i) {
+        const render::Scene& scene = i == 0 ? user : standard;
+        const app::SignerRig& rig = i == 0 ? userRig : standardRig;
+        render::Renderer renderer(options(160, 160));
+        const int handle = renderer.addScene(scene);
+        renderer.render(app::postureFrame(scene, rig, handle, posture, 1.0f), images[i]);
+        expectNoValidationMessages(renderer);
+    }
+    ASSERT_EQ(images[0].bytes.size(), images[1].bytes.size());
+    std::size_t differing = 0;
+    int largest = 0;
+    for (std::size_t i = 0; i < images[0].bytes.size(); ++i) {
+        const int d = std::abs(int(images[0].bytes[i]) - int(images[1].bytes[i]));
+        largest = std::max(largest, d);
+        if (d > 2) ++differing;
+    }
+    EXPECT_LT(differing, images[0].bytes.size() / 1000) << "largest channel difference " << largest << ", " << differing << " channels differ";
+
 }
 
 TEST(AvatarGolden, PosedSigner) {

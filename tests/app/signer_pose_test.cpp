@@ -3,10 +3,14 @@
 #include "app/avatar_builder.hpp"
 #include "app/signer_pose.hpp"
 #include "common/error.hpp"
+#include "tests/app/avatar_variants.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/trigonometric.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -154,3 +158,74 @@ TEST(SignerPose, RetargetingThroughTheRestPoseIgnoresTheUsersBoneAxes) {
     for (std::size_t i = 0; i < wa.size(); ++i)
         EXPECT_LT(glm::length(glm::vec3(wa[i][3]) - glm::vec3(wb[i][3])), 1e-4f) << s.nodes[i].name;
 }
+
+namespace {
+
+// World transforms of the required bones, in requiredSignerBones() order.
+std::vector<glm::mat4> posedJoints(const render::Scene& s, const app::SignerRig& rig, const app::SignerPosture& posture) {
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(s, rig.pose(posture), world);
+    std::vector<glm::mat4> joints;
+    for (const std::string& bone : app::requiredSignerBones()) joints.push_back(world[s.findNode(bone)]);
+    return joints;
+}
+
+}  // namespace
+
+TEST(SignerPose, AnyRestPoseIsMeasuredFromTheSkeleton) {
+    // The default signer re-exported in an A-pose (arms 40° down), with the right palm turned
+    // down and the fingers curled and splayed in the rest pose: posed, every joint must land
+    // where the default signer's does, turned the same way.
+    render::Scene s = avatar();
+    test::useAnotherRestPose(s);
+    const app::SignerRig changed(s), original(avatar());
+    for (int variant = 0; variant < 2; ++variant) {
+        app::SignerPosture posture;
+        if (variant == 1) {
+            posture.rightWrist = original.presentingTarget(hand::Side::Right);
+            posture.leftWrist = hand::ArmTarget{{120, -50, 280}, glm::quat(1, 0, 0, 0)};
+            posture.rightHand.fingers[0].bend = 0.6f;
+            posture.leftHand.thumb.bendDeg = 60.0f;
+        }
+        const std::vector<glm::mat4> a = posedJoints(s, changed, posture), b = posedJoints(avatar(), original, posture);
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            const std::string& bone = app::requiredSignerBones()[i];
+            EXPECT_LT(glm::length(glm::vec3(a[i][3]) - glm::vec3(b[i][3])) * 1000.0f, 0.05f) << bone << " variant " << variant;
+            const glm::quat qa = glm::quat_cast(glm::mat3(a[i])), qb = glm::quat_cast(glm::mat3(b[i]));
+            EXPECT_LT(hand::rotationAngleDeg(qa, qb), 0.1f) << bone << " variant " << variant;
+        }
+    }
+}
+
+TEST(SignerPose, AnAvatarFacingAnotherWayIsTurnedToFaceForward) {
+    std::vector<glm::mat4> expected;
+    render::computeWorldTransforms(avatar(), render::restPose(avatar()), expected);
+    for (float degrees : {180.0f, 90.0f, -35.0f}) {
+        render::Scene s = avatar();
+        test::turnRoots(s, glm::angleAxis(glm::radians(degrees), glm::vec3(0, 1, 0)));
+        const float turned = app::faceAvatarForward(s);
+        EXPECT_NEAR(std::remainder(turned + degrees, 360.0f), 0.0f, 1e-3f) << degrees << " turned by " << turned;
+        std::vector<glm::mat4> world;
+        render::computeWorldTransforms(s, render::restPose(s), world);
+        for (std::size_t i = 0; i < world.size(); ++i)
+            ASSERT_LT(glm::length(glm::vec3(world[i][3]) - glm::vec3(expected[i][3])), 1e-5f) << s.nodes[i].name;
+    }
+    render::Scene forward = avatar();
+    EXPECT_EQ(app::faceAvatarForward(forward), 0.0f) << "the default signer already faces +Z";
+}
+
+TEST(SignerPose, AnAvatarNotStandingUprightIsRefused) {
+    for (const glm::vec3& axis : {glm::vec3(0, 0, 1), glm::vec3(1, 0, 0)}) {  // on its side; on its back
+        render::Scene s = avatar();
+        s.sourceName = "lying.glb";
+        test::turnRoots(s, glm::angleAxis(glm::radians(90.0f), axis));
+        try {
+            app::faceAvatarForward(s);
+            ADD_FAILURE() << "accepted an avatar turned about " << axis.x << "," << axis.y << "," << axis.z;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("lying.glb"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("+Y"), std::string::npos) << e.what();
+        }
+    }
+}
+
