@@ -129,18 +129,29 @@ float faceAvatarForward(render::Scene& scene, const BoneMapping& mapping) {
     render::computeWorldTransforms(scene, render::restPose(scene), world);
     const glm::vec3 across = glm::vec3(world[left][3]) - glm::vec3(world[right][3]);  // toward the signer's left
     const float width = glm::length(across);
+    const auto degreesOf = [](float sine) { return std::asin(std::clamp(sine, -1.0f, 1.0f)) / kDeg; };
     if (!(width > 1e-6f) || std::abs(across.y) > 0.5f * width) {
         throw InputError(scene.sourceName, 0, "skeleton",
-                         "the shoulders are not level in the rest pose: the avatar must stand upright with +Y up "
-                         "(glTF's convention)");
+                         "the shoulders (leftUpperArm = node '" + scene.nodes[left].name + "', rightUpperArm = node '" +
+                             scene.nodes[right].name + "') are " +
+                             (width > 1e-6f ? std::to_string(static_cast<int>(std::lround(degreesOf(across.y / width)))) +
+                                                  "° from level"
+                                            : std::string("at the same place")) +
+                             " in the rest pose: the avatar must stand upright with +Y up (glTF's convention)");
     }
     const int hips = findBone(scene, mapping, "hips"), head = findBone(scene, mapping, "head");
     if (hips >= 0 && head >= 0) {
         const glm::vec3 up = glm::vec3(world[head][3]) - glm::vec3(world[hips][3]);
         if (!(up.y > 0.5f * glm::length(up))) {
+            const float length = glm::length(up);
             throw InputError(scene.sourceName, 0, "skeleton",
-                             "the head is not above the hips in the rest pose: the avatar must stand upright with +Y "
-                             "up (glTF's convention)");
+                             "the head (node '" + scene.nodes[head].name + "') is not above the hips (node '" +
+                                 scene.nodes[hips].name + "') in the rest pose" +
+                                 (length > 1e-6f ? " (" + std::to_string(static_cast<int>(std::lround(
+                                                              90.0f - degreesOf(up.y / length)))) +
+                                                       "° from vertical)"
+                                                 : std::string()) +
+                                 ": the avatar must stand upright with +Y up (glTF's convention)");
         }
     }
     const glm::vec3 forward = glm::cross(across, glm::vec3(0.0f, 1.0f, 0.0f));
@@ -227,6 +238,7 @@ SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, con
 
 void SignerRig::measureRestPose(const std::vector<glm::mat4>& restWorld) {
     const glm::quat identity(1.0f, 0.0f, 0.0f, 0.0f);
+    const render::Scene& scene = *scene_;
     const auto at = [&](int node) { return glm::vec3(restWorld[node][3]); };
     const auto setCorrection = [&](const std::string& vrm, glm::quat delta) {
         const auto it = bones_.find(vrm);
@@ -234,53 +246,88 @@ void SignerRig::measureRestPose(const std::vector<glm::mat4>& restWorld) {
         if (hand::rotationAngleDeg(delta, identity) < kRestToleranceDeg) delta = identity;
         it->second.restCorrection = delta;
     };
+    // The rest-pose direction from bone `from` to bone `to`; a bone of no length cannot be
+    // measured and is refused (it would turn everything after it).
+    constexpr float kMinBoneM = 1e-4f;  // 0.1 mm
+    const auto direction = [&](const std::string& from, const std::string& to) {
+        const glm::vec3 d = at(node(to)) - at(node(from));
+        if (!(glm::length(d) > kMinBoneM)) {
+            throw InputError(scene.sourceName, 0, "skeleton",
+                             from + " (node '" + scene.nodes[node(from)].name + "') and " + to + " (node '" +
+                                 scene.nodes[node(to)].name + "') are at the same place in the rest pose");
+        }
+        return d;
+    };
     for (hand::Side side : {hand::Side::Right, hand::Side::Left}) {
         const std::string s = sideName(side);
         // Arms: canonically straight out sideways (T-pose); each bone toward the next joint,
         // after its parent's correction.
         const glm::vec3 outward(side == hand::Side::Right ? -1.0f : 1.0f, 0.0f, 0.0f);
-        const glm::vec3 shoulder = at(node(s + "UpperArm")), elbow = at(node(s + "LowerArm")),
-                        wrist = at(node(s + "Hand"));
-        const glm::quat upper = swingBetween(outward, elbow - shoulder);
-        const glm::quat lower = swingBetween(upper * outward, wrist - elbow) * upper;
+        const glm::vec3 upperArm = direction(s + "UpperArm", s + "LowerArm");
+        const glm::vec3 forearm = direction(s + "LowerArm", s + "Hand");
+        const glm::quat upper = swingBetween(outward, upperArm);
+        const glm::quat lower = swingBetween(upper * outward, forearm) * upper;
         setCorrection(s + "UpperArm", upper);
-        for (const char* part : {"LowerArm", "ForearmTwistMid", "ForearmTwistWrist"}) setCorrection(s + part, lower);
 
         // Hand: its whole frame, from the middle knuckle (along) and the little-to-index
-        // knuckle line (across), so a palm turned down in the rest pose is measured too.
+        // knuckle line (across), so a palm turned down or forward in the rest pose is measured.
         const hand::HandPose rest = hand::forwardKinematics(handModel_, hand::HandControls{}, side);
         const glm::quat frame = hand::restFrame(side);
         const auto knuckle = [&](hand::Digit digit) { return rest.bodies[hand::firstBodyOf(digit)].position; };
-        const auto knuckleNode = [&](hand::Digit digit) {
-            return at(node(std::string(hand::boneName(side, static_cast<hand::Body>(hand::firstBodyOf(digit))))));
+        const auto knuckleName = [&](hand::Digit digit) {
+            return std::string(hand::boneName(side, static_cast<hand::Body>(hand::firstBodyOf(digit))));
         };
+        const glm::vec3 along = direction(s + "Hand", knuckleName(hand::Digit::Middle));
+        const glm::vec3 across = direction(knuckleName(hand::Digit::Little), knuckleName(hand::Digit::Index));
+        if (glm::length(glm::cross(glm::normalize(along), glm::normalize(across))) < 0.2f) {
+            throw InputError(scene.sourceName, 0, "skeleton",
+                             s + "Hand: the index and little knuckles lie in line with the wrist and the middle "
+                                 "knuckle in the rest pose, so the palm's orientation cannot be measured");
+        }
         const glm::quat canonicalHand = frameFromAxes(frame * (knuckle(hand::Digit::Index) - knuckle(hand::Digit::Little)),
                                                       frame * knuckle(hand::Digit::Middle));
-        const glm::quat actualHand = frameFromAxes(knuckleNode(hand::Digit::Index) - knuckleNode(hand::Digit::Little),
-                                                   knuckleNode(hand::Digit::Middle) - wrist);
-        const glm::quat handCorrection = glm::normalize(actualHand * glm::inverse(canonicalHand));
+        const glm::quat handCorrection = glm::normalize(frameFromAxes(across, along) * glm::inverse(canonicalHand));
         setCorrection(s + "Hand", handCorrection);
 
-        // Digits: each bone toward the next joint (the last bone toward its first child node,
-        // such as a VRM "_end" leaf; without one it keeps its parent bone's correction).
+        // Forearm roll. What a bone's correction must undo is how its skin was modelled: an
+        // avatar modelled with the palm turned (down or forward) has the wrist end of its
+        // forearm turned with it and the elbow end not. The roll is the hand's correction
+        // beyond the forearm's swing, about the forearm; twist bones take it in proportion
+        // (all at the wrist, half at the middle) and the lower arm none; without twist bones the
+        // lower arm, carrying the whole forearm, takes half.
+        const glm::vec3 axis = glm::normalize(forearm);
+        const glm::quat beyond = glm::normalize(handCorrection * glm::inverse(lower));
+        const float roll = 2.0f * std::atan2(glm::dot(glm::vec3(beyond.x, beyond.y, beyond.z), axis), beyond.w);
+        const auto rolled = [&](float fraction) { return glm::normalize(glm::angleAxis(fraction * roll, axis) * lower); };
+        const bool twistBones = bones_.count(s + "ForearmTwistMid") || bones_.count(s + "ForearmTwistWrist");
+        setCorrection(s + "LowerArm", twistBones ? lower : rolled(0.5f));
+        setCorrection(s + "ForearmTwistMid", rolled(0.5f));
+        setCorrection(s + "ForearmTwistWrist", rolled(1.0f));
+
+        // Digits: each bone toward the next joint. The last bone aims at a leaf that continues
+        // it (its only child, such as a VRM "_end" node, at least 1 mm away and within 60° of
+        // the direction its parent's correction predicts); otherwise it keeps its parent's.
         const auto info = hand::handBones(side);
         for (int digit = 0; digit < hand::kDigitCount; ++digit) {
             const int first = hand::firstBodyOf(static_cast<hand::Digit>(digit));
             glm::quat parent = handCorrection;
             for (int k = 0; k < 3; ++k) {
                 const int body = first + k;
-                const int n = node(std::string(info[body].name));
+                const std::string name(info[body].name);
                 const glm::vec3 canonicalNext = k < 2 ? rest.bodies[body + 1].position : rest.tips[digit];
-                const glm::vec3 canonicalDirection = frame * (canonicalNext - rest.bodies[body].position);
-                std::optional<glm::vec3> actualNext;
+                const glm::vec3 predicted = parent * (frame * (canonicalNext - rest.bodies[body].position));
+                std::optional<glm::vec3> actual;
                 if (k < 2) {
-                    actualNext = at(node(std::string(info[body + 1].name)));
-                } else if (!scene_->nodes[n].children.empty()) {
-                    actualNext = at(scene_->nodes[n].children.front());
+                    actual = direction(name, std::string(info[body + 1].name));
+                } else if (scene.nodes[node(name)].children.size() == 1) {
+                    const glm::vec3 leaf = at(scene.nodes[node(name)].children.front()) - at(node(name));
+                    if (glm::length(leaf) > 1e-3f &&
+                        glm::dot(glm::normalize(leaf), glm::normalize(predicted)) > std::cos(60.0f * kDeg)) {
+                        actual = leaf;
+                    }
                 }
-                const glm::quat correction =
-                    actualNext ? swingBetween(parent * canonicalDirection, *actualNext - at(n)) * parent : parent;
-                setCorrection(std::string(info[body].name), correction);
+                const glm::quat correction = actual ? swingBetween(predicted, *actual) * parent : parent;
+                setCorrection(name, correction);
                 parent = correction;
             }
         }

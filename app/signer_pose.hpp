@@ -8,8 +8,12 @@
 // so the user's own bone axes do not matter. canonicalRest is the bone's frame in the
 // canonical rest pose (T-pose facing +Z, palms down-forward as the default signer, fingers
 // straight); Δ turns it onto the avatar's own rest pose, measured from the skeleton: A-pose
-// arms, palms down, curled or splayed fingers are all taken as they are. The arm lengths and
-// shoulder positions are read from the skeleton. An avatar facing another way (VRM 0.x faces
+// arms, palms down or forward, curled or splayed fingers are all taken as they are. Arm and
+// digit bones are measured by their direction to the next joint (the last bone of a digit
+// by a leaf node continuing it, if it has one), the hand by its whole frame; the forearm's
+// roll follows the hand's (app/signer_pose.cpp, measureRestPose). Not measured: a bone's
+// roll about its own axis elsewhere — the thumb's included. A bone of no length is refused.
+// The arm lengths and shoulder positions are read from the skeleton. An avatar facing another way (VRM 0.x faces
 // -Z) is turned to face +Z first by faceAvatarForward().
 //
 // Frames. Wrist targets and gaze points are given in the body frame of hand/arm_ik.hpp

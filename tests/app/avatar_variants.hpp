@@ -53,6 +53,8 @@ inline void swingRest(render::Scene& s, const std::string& name, const std::stri
 
 // The default signer with a different rest pose: arms 40° down (A-pose), the right forearm
 // swung forward and its hand turned palm down about the forearm, fingers curled and splayed.
+// Every turn is one SignerRig can see in the skeleton, so the posed skin must match the
+// default signer's.
 inline void useAnotherRestPose(render::Scene& s) {
     const glm::vec3 forward(0, 0, 1), up(0, 1, 0);
     swingRest(s, "leftUpperArm", "leftLowerArm", forward, -40.0f);
@@ -62,7 +64,11 @@ inline void useAnotherRestPose(render::Scene& s) {
     render::computeWorldTransforms(s, render::restPose(s), world);
     const glm::vec3 forearm = glm::normalize(glm::vec3(world[s.findNode("rightHand")][3]) -
                                              glm::vec3(world[s.findNode("rightLowerArm")][3]));
+    // Palm down: modelled so, the wrist end of the forearm turns with the hand (the twist
+    // bones: all of it at the wrist, half at the middle), the elbow end does not.
     turnRest(s, "rightHand", glm::angleAxis(glm::radians(90.0f), forearm));
+    turnRest(s, "rightForearmTwistWrist", glm::angleAxis(glm::radians(90.0f), forearm));
+    turnRest(s, "rightForearmTwistMid", glm::angleAxis(glm::radians(45.0f), forearm));
     swingRest(s, "rightIndexProximal", "rightIndexIntermediate", forward, 30.0f);
     swingRest(s, "rightIndexIntermediate", "rightIndexDistal", up, 25.0f);
     swingRest(s, "leftLittleProximal", "leftLittleIntermediate", up, -20.0f);

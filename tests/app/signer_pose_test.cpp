@@ -161,12 +161,23 @@ TEST(SignerPose, RetargetingThroughTheRestPoseIgnoresTheUsersBoneAxes) {
 
 namespace {
 
-// World transforms of the required bones, in requiredSignerBones() order.
+// The required bones and the forearm twist bones.
+const std::vector<std::string>& comparedBones() {
+    static const std::vector<std::string> bones = [] {
+        std::vector<std::string> b = app::requiredSignerBones();
+        for (const char* twist : {"leftForearmTwistMid", "leftForearmTwistWrist", "rightForearmTwistMid", "rightForearmTwistWrist"})
+            b.emplace_back(twist);
+        return b;
+    }();
+    return bones;
+}
+
+// World transforms of comparedBones(), in that order.
 std::vector<glm::mat4> posedJoints(const render::Scene& s, const app::SignerRig& rig, const app::SignerPosture& posture) {
     std::vector<glm::mat4> world;
     render::computeWorldTransforms(s, rig.pose(posture), world);
     std::vector<glm::mat4> joints;
-    for (const std::string& bone : app::requiredSignerBones()) joints.push_back(world[s.findNode(bone)]);
+    for (const std::string& bone : comparedBones()) joints.push_back(world[s.findNode(bone)]);
     return joints;
 }
 
@@ -189,7 +200,7 @@ TEST(SignerPose, AnyRestPoseIsMeasuredFromTheSkeleton) {
         }
         const std::vector<glm::mat4> a = posedJoints(s, changed, posture), b = posedJoints(avatar(), original, posture);
         for (std::size_t i = 0; i < a.size(); ++i) {
-            const std::string& bone = app::requiredSignerBones()[i];
+            const std::string& bone = comparedBones()[i];
             EXPECT_LT(glm::length(glm::vec3(a[i][3]) - glm::vec3(b[i][3])) * 1000.0f, 0.05f) << bone << " variant " << variant;
             const glm::quat qa = glm::quat_cast(glm::mat3(a[i])), qb = glm::quat_cast(glm::mat3(b[i]));
             EXPECT_LT(hand::rotationAngleDeg(qa, qb), 0.1f) << bone << " variant " << variant;
@@ -226,6 +237,50 @@ TEST(SignerPose, AnAvatarNotStandingUprightIsRefused) {
             EXPECT_NE(std::string(e.what()).find("lying.glb"), std::string::npos) << e.what();
             EXPECT_NE(std::string(e.what()).find("+Y"), std::string::npos) << e.what();
         }
+    }
+}
+
+TEST(SignerPose, TheLastBoneOfADigitAimsOnlyAtALeafThatContinuesIt) {
+    // A curled middle-finger tip with a VRM-style "_end" leaf is measured; a ring-finger tip with
+    // a sideways attachment (say a ring) is not turned by it.
+    render::Scene s = avatar();
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(s, render::restPose(s), world);
+    const auto addChild = [&](const std::string& parent, const std::string& name, const glm::vec3& localOffset) {
+        render::Node leaf;
+        leaf.name = name;
+        leaf.parent = s.findNode(parent);
+        leaf.rest.translation = localOffset;
+        s.nodes.push_back(leaf);
+        s.nodes[leaf.parent].children.push_back(static_cast<int>(s.nodes.size()) - 1);
+    };
+    const float tipM = 0.02f;
+    addChild("rightMiddleDistal", "rightMiddleDistal_end", {0.0f, 0.0f, tipM});  // hand bones run along +z
+    addChild("rightRingDistal", "ring", {0.0f, 0.012f, 0.001f});
+    test::swingRest(s, "rightMiddleDistal", "rightMiddleDistal_end", glm::vec3(0, 1, 0), 35.0f);
+    const app::SignerRig changed(s), original(avatar());
+    app::SignerPosture posture;
+    posture.rightWrist = original.presentingTarget(hand::Side::Right);
+    posture.rightHand.fingers[1].hook = 0.5f;
+    const std::vector<glm::mat4> a = posedJoints(s, changed, posture), b = posedJoints(avatar(), original, posture);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const glm::quat qa = glm::quat_cast(glm::mat3(a[i])), qb = glm::quat_cast(glm::mat3(b[i]));
+        EXPECT_LT(hand::rotationAngleDeg(qa, qb), 0.1f) << comparedBones()[i];
+    }
+}
+
+TEST(SignerPose, ABoneOfNoLengthIsRefusedNamingIt) {
+    render::Scene s = avatar();
+    s.sourceName = "flat.glb";
+    s.nodes[s.findNode("rightIndexIntermediate")].rest.translation = glm::vec3(0.0f);
+    try {
+        const app::SignerRig rig(s);
+        ADD_FAILURE() << "accepted a skeleton with a bone of no length";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("flat.glb"), std::string::npos) << message;
+        EXPECT_NE(message.find("rightIndexProximal"), std::string::npos) << message;
+        EXPECT_NE(message.find("rightIndexIntermediate"), std::string::npos) << message;
     }
 }
 
