@@ -114,7 +114,7 @@ void registerAvatarCommands(Commands& commands) {
         const stimuli::HandshapeLibrary library =
             stimuli::loadHandshapes(stimuli::handshapesFile(g->shapesFile, g->source.scenesDir), rig.handModel());
         const std::uint32_t rows = static_cast<std::uint32_t>((library.shapes.size() + g->columns - 1) / g->columns);
-        renderToFile(scene, [&](int handle) { return galleryFrame(scene, rig, handle, library, g->columns, view); },
+        renderToFile(scene, [&](int handle) { return galleryFrame(rig, handle, library, g->columns, view); },
                      g->columns * g->cell, rows * g->cell, g->device, g->msaa, g->gallery);
         std::printf("%s: %zu handshapes\n", g->gallery.c_str(), library.shapes.size());
     });

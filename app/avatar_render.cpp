@@ -50,27 +50,33 @@ GalleryView parseGalleryView(const std::string& text) {
     return view;
 }
 
-render::Frame galleryFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,
+render::Frame galleryFrame(const SignerRig& rig, int sceneHandle,
                            const stimuli::HandshapeLibrary& library, std::uint32_t columns,
                            const GalleryView& galleryView) {
     render::Frame frame;
     frame.columns = std::max(1u, columns);
     frame.rows = static_cast<std::uint32_t>((library.shapes.size() + frame.columns - 1) / frame.columns);
-    // One viewpoint for every shape: straight at the palm of the presented right hand.
+    // One viewpoint for every shape, around the presented right hand: aimed 90 mm (scaled with
+    // the avatar's hand) up the palm from the wrist, in the hand model's palm frame, so that an
+    // avatar's own bone axes do not matter.
     SignerPosture posture;
     posture.rightWrist = rig.presentingTarget(hand::Side::Right);
-    std::vector<glm::mat4> world;
-    render::computeWorldTransforms(avatar, rig.pose(posture), world);
-    const glm::mat4& palm = world[avatar.findNode("rightHand")];
-    const glm::vec3 center = glm::vec3(palm * glm::vec4(0.0f, 0.0f, 90.0f * 0.001f, 1.0f));
+    PoseReport report;
+    rig.pose(posture, &report);
+    const float scale = rig.handScale();
+    const glm::vec3 center =
+        rig.worldFromBodyMm(report.right.wristMm + report.right.hand * glm::vec3(0.0f, 0.0f, 90.0f * scale));
+    const float distance = 0.55f * scale;
     render::Camera camera;
     camera.verticalFovDegrees = 28.0f;
     camera.target = center;
     // Straight at the palm (+z, the signer's forward) unless the view orbits elsewhere; the
-    // presented palm's thumb points to +x.
+    // presented palm's thumb points to +x. Whatever lies nearer the camera than the hand's
+    // reach (the signer's own body, seen from behind) is clipped away by the near plane.
     const float azimuth = glm::radians(galleryView.azimuthDeg), elevation = glm::radians(galleryView.elevationDeg);
-    camera.eye = center + 0.55f * glm::vec3(std::sin(azimuth) * std::cos(elevation), std::sin(elevation),
-                                            std::cos(azimuth) * std::cos(elevation));
+    camera.eye = center + distance * glm::vec3(std::sin(azimuth) * std::cos(elevation), std::sin(elevation),
+                                               std::cos(azimuth) * std::cos(elevation));
+    camera.nearPlane = distance - 0.2f * scale;
     for (const stimuli::Handshape& shape : library.shapes) {
         posture.rightHand = shape.controls;
         render::View view;

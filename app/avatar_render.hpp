@@ -36,7 +36,7 @@ GalleryView parseGalleryView(const std::string& text);
 // A grid of every handshape in `library` on the right hand, presented palm-forward beside the
 // shoulder, each labelled with its name, all seen from `view` (default: straight at the palm).
 // `sceneHandle` is the avatar's Renderer handle.
-render::Frame galleryFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,
+render::Frame galleryFrame(const SignerRig& rig, int sceneHandle,
                            const stimuli::HandshapeLibrary& library, std::uint32_t columns,
                            const GalleryView& view = {});
 

@@ -117,7 +117,7 @@ void runDemo(const DemoOptions& o) {
         render::Renderer renderer(signerRendererOptions(columns * cell, rows * cell, o.msaa, o.device));
         const int handle = renderer.addScene(avatar);
         render::Image image;
-        renderer.render(galleryFrame(avatar, rig, handle, shapes, columns), image);
+        renderer.render(galleryFrame(rig, handle, shapes, columns), image);
         const fs::path file = root / "handshapes.png";
         render::writeImage(image, file);
         files.push_back(fileEntry(root, file, "every handshape of scenes/handshapes.json on the right hand",

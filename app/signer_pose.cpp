@@ -230,6 +230,11 @@ SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, con
         arm.forearmLengthMm = glm::length(position(s + "Hand") - position(s + "LowerArm")) * kMToMm;
         arms_[side == hand::Side::Right ? 0 : 1] = arm;
     }
+    {
+        const hand::HandPose rest = hand::forwardKinematics(handModel_, hand::HandControls{}, hand::Side::Right);
+        const float modelMm = glm::length(rest.bodies[hand::firstBodyOf(hand::Digit::Middle)].position);
+        handScale_ = glm::length(position("rightMiddleProximal") - position("rightHand")) * kMToMm / modelMm;
+    }
     // Without eye bones: the default signer's eyes relative to its head bone.
     gaze_.eyesMm = (position("head") - bodyOriginM_) * kMToMm + glm::vec3(0.0f, 115.0f, 78.0f);
     if (bones_.count("leftEye") && bones_.count("rightEye"))

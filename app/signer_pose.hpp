@@ -97,6 +97,12 @@ public:
     const hand::GazeModel& gaze() const { return gaze_; }
     const hand::HandModel& handModel() const { return handModel_; }
 
+    // A body-frame point (mm) in world coordinates (metres).
+    glm::vec3 worldFromBodyMm(const glm::vec3& bodyMm) const { return bodyOriginM_ + bodyMm * 0.001f; }
+    // The avatar's hand size relative to the hand model's: rest distance from the right wrist
+    // to the middle knuckle over the model's (1 for the default signer).
+    float handScale() const { return handScale_; }
+
     // Where an unused hand rests: in front of the waist, palm in.
     hand::ArmTarget restingTarget(hand::Side side) const;
     // A comfortable default for a hand being shown: beside the shoulder, palm toward the
@@ -124,6 +130,7 @@ private:
     std::array<hand::ArmModel, 2> arms_;     // right, left
     hand::GazeModel gaze_;
     glm::vec3 bodyOriginM_{0.0f};            // chest, world metres
+    float handScale_ = 1.0f;
 };
 
 }  // namespace signstim::app

@@ -77,7 +77,7 @@ TEST(AvatarGolden, HandshapeGallery) {
     render::Renderer renderer(options(columns * cell, rows * cell));
     const int handle = renderer.addScene(scene);
     render::Image image;
-    renderer.render(app::galleryFrame(scene, rig, handle, library, columns), image);
+    renderer.render(app::galleryFrame(rig, handle, library, columns), image);
     expectNoValidationMessages(renderer);
     const std::string problem = render::testing::compareWithGolden(image, "../../app/golden/handshape_gallery");
     EXPECT_TRUE(problem.empty()) << problem;
@@ -88,7 +88,7 @@ TEST(AvatarGallery, ViewsOrbitTheHandAtTheSameDistance) {
     const app::SignerRig rig(scene);
     const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", rig.handModel());
     const auto offset = [&](const std::string& view) {
-        const render::Frame frame = app::galleryFrame(scene, rig, 0, library, 7, app::parseGalleryView(view));
+        const render::Frame frame = app::galleryFrame(rig, 0, library, 7, app::parseGalleryView(view));
         return frame.views.at(0).camera.eye - frame.views.at(0).camera.target;
     };
     const glm::vec3 palm = offset("palm"), thumb = offset("thumb"), back = offset("back"), top = offset("top");
@@ -104,6 +104,28 @@ TEST(AvatarGallery, ViewsOrbitTheHandAtTheSameDistance) {
     for (const char* bad : {"side", "10", "1,2,3", "0,95", "abc,def"}) {
         EXPECT_THROW(app::parseGalleryView(bad), InputError) << bad;
     }
+}
+
+TEST(AvatarGallery, TheHandIsInSightFromEveryNamedView) {
+    // From behind, the signer's own body lies between the camera and the hand: the near plane
+    // must clip it. Skin (red over green over blue, not dark) must fill a good part of the cell.
+    const render::Scene scene = render::loadGltf(kScenes + "/avatar/signer.glb");
+    const app::SignerRig rig(scene);
+    stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", rig.handModel());
+    library.shapes = {library.at("5")};
+    render::Renderer renderer(options(96, 96));
+    const int handle = renderer.addScene(scene);
+    for (const char* view : {"palm", "thumb", "little", "back", "top"}) {
+        render::Image image;
+        renderer.render(app::galleryFrame(rig, handle, library, 1, app::parseGalleryView(view)), image);
+        std::size_t skin = 0;
+        for (std::size_t i = 0; i < image.bytes.size(); i += 4) {
+            const int r = image.bytes[i], g = image.bytes[i + 1], b = image.bytes[i + 2];
+            if (r > 90 && r > g + 15 && g > b) ++skin;
+        }
+        EXPECT_GT(skin, image.bytes.size() / 4 / 20) << view << ": " << skin << " skin pixels";
+    }
+    expectNoValidationMessages(renderer);
 }
 
 TEST(AvatarGallery, AnAvatarInAnotherRestPoseAndFacingRendersTheSameSigning) {
