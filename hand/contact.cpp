@@ -140,32 +140,46 @@ float palmClearanceMm(const HandModel& model, const Capsule& capsule, Side side)
     const glm::vec3 a{capsule.start.x, capsule.start.y * ySign, capsule.start.z};
     const glm::vec3 b{capsule.end.x, capsule.end.y * ySign, capsule.end.z};
     const HandDimensions& d = model.dimensions;
+    // The slab's outline. Only where the bone's axis lies over it is the bone measured: one
+    // beside the palm (the thumb along the index in G) lies against its side, which is not
+    // sinking into it, and the rectangle is no model of the palm's side near the thumb.
+    const float r = capsule.radiusMm;
     const float yMin = model.mcpPositionMm[3].y - 0.5f * d.pipWidthMm[3];
     const float yMax = model.mcpPositionMm[0].y + 0.5f * d.pipWidthMm[0];
     const float zMin = d.palmWristZMm, zMax = palmKnuckleZMm(model);
-    // Clip the axis a + t(b - a), t in [0, 1], to the slab's y and z extent.
+    // Clip the axis a + t(b - a), t in [0, 1], to where g(t) >= 0 for g linear in t.
     float t0 = 0.0f, t1 = 1.0f;
-    const auto clip = [&](float p, float q, float lo, float hi) {
-        const float delta = q - p;
-        if (std::abs(delta) < 1e-9f) {
-            if (p < lo || p > hi) t1 = -1.0f;  // parallel and outside
-            return;
+    const auto keepWhereNonNegative = [&](float g0, float g1) {
+        if (g0 < 0.0f && g1 < 0.0f) {
+            t1 = -1.0f;
+        } else if (g0 < 0.0f || g1 < 0.0f) {
+            const float t = g0 / (g0 - g1);  // where g crosses zero
+            if (g0 < 0.0f) t0 = std::max(t0, t); else t1 = std::min(t1, t);
         }
-        float ta = (lo - p) / delta, tb = (hi - p) / delta;
-        if (ta > tb) std::swap(ta, tb);
-        t0 = std::max(t0, ta);
-        t1 = std::min(t1, tb);
     };
-    clip(a.y, b.y, yMin, yMax);
-    clip(a.z, b.z, zMin, zMax);
+    keepWhereNonNegative(a.y - yMin, b.y - yMin);
+    keepWhereNonNegative(yMax - a.y, yMax - b.y);
+    keepWhereNonNegative(a.z - zMin, b.z - zMin);
+    keepWhereNonNegative(zMax - a.z, zMax - b.z);
     if (t0 > t1) return std::numeric_limits<float>::infinity();
-    // Height above the surface is linear in t over the clipped part (the surface is linear in
-    // z there), so its minimum is at an end.
+    const auto at = [&](float t) { return a + t * (b - a); };
+    // Only the palmar side: a bone behind the back of the hand (dorsal of the slab) is not in
+    // the palm. The dorsal surface is linear in z, hence in t, over the clipped part.
+    const auto dorsalGap = [&](float t) {
+        const glm::vec3 p = at(t);
+        return p.x - (2.0f * d.palmCentreXMm - palmarSurfaceXMm(model, p.z));
+    };
+    const float s0 = t0, s1 = t1;
+    const float g0 = dorsalGap(s0), g1 = dorsalGap(s1);
+    if (g0 < 0.0f && g1 < 0.0f) return std::numeric_limits<float>::infinity();
+    if (g0 < 0.0f) t0 = s0 + (s1 - s0) * g0 / (g0 - g1);
+    if (g1 < 0.0f) t1 = s0 + (s1 - s0) * g0 / (g0 - g1);
+    // Height above the palmar surface is linear in t there too, so its minimum is at an end.
     const auto above = [&](float t) {
-        const glm::vec3 p = a + t * (b - a);
+        const glm::vec3 p = at(t);
         return p.x - palmarSurfaceXMm(model, p.z);
     };
-    return std::min(above(t0), above(t1)) - capsule.radiusMm;
+    return std::min(above(t0), above(t1)) - r;
 }
 
 float capsuleGap(const Capsule& a, const Capsule& b) {

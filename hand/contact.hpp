@@ -70,9 +70,12 @@ float capsuleGap(const Capsule& a, const Capsule& b);
 std::array<Capsule, kBodyCount> boneCapsules(const HandModel& model, const HandPose& pose);
 
 // Gap between a capsule and the palm's palmar surface (HandDimensions' palm slab), over the
-// part of the capsule's axis that lies in front of the palm (between the wrist and the
-// knuckle line, between the index and little fingers' outer edges): negative when the
-// capsule sinks into the palm. +infinity when no part of it lies in front of the palm.
+// part of the capsule's axis that lies over the palm (between the wrist and the knuckle
+// line, between the index and little fingers' outer edges, palmar of the slab's back
+// surface): negative when the capsule sinks into the palm. +infinity when no part of its
+// axis lies over the palm (a bone beside the palm's edge is not measured). The outline is a
+// rectangle; the avatar's palm mesh shares the slab's thickness but follows the knuckle arc
+// and narrows at the wrist.
 // `side` says which hand `capsule` belongs to (the left hand's palm spans -y).
 float palmClearanceMm(const HandModel& model, const Capsule& capsule, Side side);
 

@@ -149,8 +149,9 @@ struct HandLimits {
     float thumbTwistStartSpreadDeg = 58.0f;  // 10° + 60 % of the 80° spread range
     float thumbTwistFullBendDeg = 20.0f;
     // CMC rotation R_z(−θ)·R_x(−φ)·R_z(θ)·R_z(ψ): θ and φ swing the metacarpal by the shortest
-    // rotation and only ψ rolls it (docs/hand.md). false = SPEC §1.4's literal
-    // R_z(−θ)·R_x(−φ)·R_z(ψ), whose θ also spins the thumb about its own axis.
+    // rotation and only ψ rolls it (docs/hand.md). false = SPEC §1.4's literal chain
+    // R_z(−θ)·R_x(−φ)·R_z(ψ), whose θ also spins the thumb about its own axis; with
+    // thumbTwistSpanDeg = +45 as well, the thumb is exactly SPEC §1.4's.
     bool thumbSpinFreeSwing = true;
 };
 

@@ -3,7 +3,8 @@
 // scenes/handshapes.json, validated on load. Errors name the file, the line, the shape and
 // the field (signstim::InputError).
 //
-// File format (see scenes/handshapes.json):
+// File format (see scenes/handshapes.json), "version": 2 required (version 1 thumbs were
+// tuned for SPEC §1.4's literal thumb chain and are refused with an explanation):
 //   "fingerPresets": {"FC": {"bend": .95, "hook": .8}, ...}          SPEC §1.6 presets
 //   "thumbPresets":  {"side": {"bendDeg": 5, "spreadDeg": 12, "mcpDeg": 0, "ipDeg": 0}, ...}
 //   "handshapes": [{"name": "A", "aslLex": "A" | null, "description": "...",

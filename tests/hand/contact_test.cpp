@@ -145,13 +145,22 @@ TEST(ContactTest, PalmClearanceMeasuresFromThePalmarSurface) {
     // Pushed 4 mm into the palm: negative.
     const Capsule sunk{{surface + 4.0f, 15.0f, zMid}, {surface + 4.0f, -30.0f, zMid}, 8.0f};
     EXPECT_NEAR(palmClearanceMm(model, sunk, Side::Right), -4.0f, 1e-3f);
-    // Only the part in front of the palm counts: a bone sloping down beyond the knuckles.
+    // Only the part over the palm counts: a bone sloping down beyond the knuckles is measured
+    // where its axis crosses the knuckle line.
     const float zKnuckles = palmKnuckleZMm(model);
     const Capsule beyond{{surface + 20.0f, 0.0f, zKnuckles - 10.0f}, {0.0f, 0.0f, zKnuckles + 30.0f}, 5.0f};
     const float atKnuckles = 0.75f * (surface + 20.0f);  // x where the axis crosses the knuckle line
     EXPECT_NEAR(palmClearanceMm(model, beyond, Side::Right), atKnuckles - palmarSurfaceXMm(model, zKnuckles) - 5.0f, 1e-3f);
     // Entirely past the knuckles or beside the hand: nothing to measure.
     EXPECT_TRUE(std::isinf(palmClearanceMm(model, {{0, 0, zKnuckles + 5}, {0, 0, zKnuckles + 40}, 5.0f}, Side::Right)));
+    // Beside the index edge (the thumb along the index in G): against the palm's side, not in it.
+    const float indexEdge = model.mcpPositionMm[0].y + 0.5f * model.dimensions.pipWidthMm[0];
+    EXPECT_TRUE(std::isinf(palmClearanceMm(
+        model, {{surface - 5.0f, indexEdge + 4.0f, zMid - 20.0f}, {surface - 5.0f, indexEdge + 4.0f, zMid + 20.0f}, 8.0f},
+        Side::Right)));
+    // Behind the back of the hand: not in the palm.
+    const float back = 2.0f * model.dimensions.palmCentreXMm - surface;
+    EXPECT_TRUE(std::isinf(palmClearanceMm(model, {{back - 6.0f, 15.0f, zMid}, {back - 6.0f, -30.0f, zMid}, 5.0f}, Side::Right)));
     EXPECT_TRUE(std::isinf(palmClearanceMm(model, {{0, 80, zMid}, {0, 90, zMid}, 5.0f}, Side::Right)));
     // The left hand's palm spans -y: the mirrored capsule gives the same clearance.
     const Capsule mirrored{{across.start.x, -across.start.y, across.start.z}, {across.end.x, -across.end.y, across.end.z}, 8.0f};

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -296,17 +297,24 @@ TEST_F(HandModelTest, ThumbPronationTurnsThePadTowardTheFingertips) {
 }
 
 TEST_F(HandModelTest, LiteralSpecChainIsAvailable) {
-    // thumbSpinFreeSwing = false gives SPEC §1.4's chain R_z(−θ)·R_x(−φ)·R_z(ψ) exactly.
+    // thumbSpinFreeSwing = false with thumbTwistSpanDeg = +45 is SPEC §1.4 exactly:
+    // R_z(−θ)·R_x(−φ)·R_z(ψ), ψ = −90° + 45°·r·g. Checked where the twist is active.
     HandModel literal = model;
     literal.limits.thumbSpinFreeSwing = false;
-    HandControls c;
-    c.thumb = {70.0f, 40.0f, 0.0f, 0.0f};
-    const JointAngles a = jointAngles(literal, c);
-    const glm::quat expected = glm::angleAxis(glm::radians(-70.0f), glm::vec3(0, 0, 1)) *
-                               glm::angleAxis(glm::radians(-40.0f), glm::vec3(1, 0, 0)) *
-                               glm::angleAxis(glm::radians(a.thumb.twistDeg), glm::vec3(0, 0, 1));
-    const glm::quat actual = forwardKinematics(literal, a, Side::Right).bodies[int(Body::ThumbMetacarpal)].rotation;
-    EXPECT_GT(std::abs(glm::dot(actual, expected)), 1.0f - 1e-6f);
+    literal.limits.thumbTwistSpanDeg = 45.0f;
+    for (float bend : {10.0f, 60.0f, 110.0f}) {
+        for (float spread : {40.0f, 74.0f, 90.0f}) {
+            HandControls c;
+            c.thumb = {bend, spread, 0.0f, 0.0f};
+            const float r = std::clamp((spread - 58.0f) / 32.0f, 0.0f, 1.0f), g = std::clamp(bend / 20.0f, 0.0f, 1.0f);
+            const float psi = -90.0f + 45.0f * r * g;
+            const glm::quat expected = glm::angleAxis(glm::radians(-bend), glm::vec3(0, 0, 1)) *
+                                       glm::angleAxis(glm::radians(-spread), glm::vec3(1, 0, 0)) *
+                                       glm::angleAxis(glm::radians(psi), glm::vec3(0, 0, 1));
+            const glm::quat actual = forwardKinematics(literal, c, Side::Right).bodies[int(Body::ThumbMetacarpal)].rotation;
+            EXPECT_GT(std::abs(glm::dot(actual, expected)), 1.0f - 1e-6f) << bend << " " << spread;
+        }
+    }
 }
 
 TEST_F(HandModelTest, ThumbMetacarpalPointsAlongSphericalDirection) {

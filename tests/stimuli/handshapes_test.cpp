@@ -140,6 +140,7 @@ TEST_F(HandshapeLibraryTest, AbductionIsStoredAsSpreadAfterRadiation) {
 
 // ---- malformed files --------------------------------------------------------------------
 const char* kGood = R"({
+  "version": 2,
   "fingerPresets": {"E0": {"bend": 0, "hook": 0}},
   "thumbPresets": {"side": {"bendDeg": 5, "spreadDeg": 12, "mcpDeg": 0, "ipDeg": 0}},
   "handshapes": [
@@ -176,21 +177,32 @@ TEST(HandshapeFileTest, GoodFileParses) {
 TEST(HandshapeFileTest, UnknownPresetNamesFileLineShapeAndField) {
     const InputError e = parseError(replaced(kGood, "\"little\": \"E0\"", "\"little\": \"E9\""));
     EXPECT_EQ(e.file(), "shapes.json");
-    EXPECT_EQ(e.line(), 9);
+    EXPECT_EQ(e.line(), 10);
     EXPECT_NE(e.field().find("Bad"), std::string::npos) << e.field();
     EXPECT_NE(e.field().find("little"), std::string::npos) << e.field();
     EXPECT_NE(std::string(e.what()).find("E9"), std::string::npos);
 }
 
+TEST(HandshapeFileTest, VersionOneAndUnknownVersionsAreRefused) {
+    InputError e = parseError(replaced(kGood, "\"version\": 2", "\"version\": 1"));
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_EQ(e.field(), "version");
+    EXPECT_NE(std::string(e.what()).find("retune the thumbs"), std::string::npos) << e.what();
+    e = parseError(replaced(kGood, "\"version\": 2", "\"version\": \"2\""));
+    EXPECT_NE(std::string(e.what()).find("expected 2"), std::string::npos) << e.what();
+    e = parseError(replaced(kGood, "\"version\": 2,", ""));
+    EXPECT_EQ(e.field(), "version");
+}
+
 TEST(HandshapeFileTest, NonNumericAndOutOfRangeValuesAreRejected) {
     InputError e = parseError(replaced(kGood, "\"ring\": \"E0\"", "\"ring\": {\"bend\": \"much\"}"));
-    EXPECT_EQ(e.line(), 9);
+    EXPECT_EQ(e.line(), 10);
     EXPECT_NE(e.field().find("ring.bend"), std::string::npos) << e.field();
     e = parseError(replaced(kGood, "\"ring\": \"E0\"", "\"ring\": {\"spreadDeg\": 80}"));
     EXPECT_NE(std::string(e.what()).find("out of range"), std::string::npos) << e.what();
     e = parseError(replaced(kGood, "\"thumb\": \"side\"", "\"thumb\": {\"bendDeg\": 5, \"spredDeg\": 3}"));
     EXPECT_NE(e.field().find("spredDeg"), std::string::npos) << e.field();
-    EXPECT_EQ(e.line(), 10);
+    EXPECT_EQ(e.line(), 11);
 }
 
 TEST(HandshapeFileTest, MissingFingerDuplicateNameAndBrokenJsonAreRejected) {
