@@ -301,7 +301,8 @@ void SignerRig::measureRestPose(const std::vector<glm::mat4>& restWorld) {
         // (all at the wrist, half at the middle) and the lower arm none; without twist bones the
         // lower arm, carrying the whole forearm, takes half.
         const glm::vec3 axis = glm::normalize(forearm);
-        const glm::quat beyond = glm::normalize(handCorrection * glm::inverse(lower));
+        glm::quat beyond = glm::normalize(handCorrection * glm::inverse(lower));
+        if (beyond.w < 0.0f) beyond = -beyond;  // the same rotation, its angle within ±180°
         const float roll = 2.0f * std::atan2(glm::dot(glm::vec3(beyond.x, beyond.y, beyond.z), axis), beyond.w);
         const auto rolled = [&](float fraction) { return glm::normalize(glm::angleAxis(fraction * roll, axis) * lower); };
         const bool twistBones = bones_.count(s + "ForearmTwistMid") || bones_.count(s + "ForearmTwistWrist");

@@ -11,8 +11,8 @@
 // arms, palms down or forward, curled or splayed fingers are all taken as they are. Arm and
 // digit bones are measured by their direction to the next joint (the last bone of a digit
 // by a leaf node continuing it, if it has one), the hand by its whole frame; the forearm's
-// roll follows the hand's (app/signer_pose.cpp, measureRestPose). Not measured: a bone's
-// roll about its own axis elsewhere — the thumb's included. A bone of no length is refused.
+// roll follows the hand's (app/signer_pose.cpp, measureRestPose). Not measured: the upper
+// arm's or a digit's roll about its own axis — the thumb's included. A bone of no length is refused.
 // The arm lengths and shoulder positions are read from the skeleton. An avatar facing another way (VRM 0.x faces
 // -Z) is turned to face +Z first by faceAvatarForward().
 //

@@ -36,16 +36,15 @@ public:
         }
         // Version 2: thumbs for the spin-free thumb swing (docs/hand.md). Version 1 thumbs were
         // tuned for SPEC §1.4's literal chain and would now be rolled by θ.
-        if (!root.contains("version")) {
-            fail({}, "version", "required: \"version\": 2 (the handshape format of this signstim)");
-        }
-        const json& version = root["version"];
+        // A file without "version" predates the field being checked: it is a version 1 file.
+        const json version = root.contains("version") ? root["version"] : json(1);
         if (!version.is_number_integer() || version.get<int>() != 2) {
             const bool one = version.is_number_integer() && version.get<int>() == 1;
-            fail({"\"version\""}, "version",
-                 one ? "version 1 files were tuned for the SPEC's literal thumb chain, which this signstim replaced "
-                       "with a swing without spin: retune the thumbs (signstim handshapes --gallery F.png --view "
-                       "60,0 helps; docs/hand.md) and set \"version\": 2"
+            fail(root.contains("version") ? std::vector<std::string>{"\"version\""} : std::vector<std::string>{}, "version",
+                 one ? std::string(root.contains("version") ? "version 1" : "no \"version\" (version 1)") +
+                           ": its thumbs were tuned for the SPEC's literal thumb chain, which this signstim replaced "
+                           "with a swing without spin: retune the thumbs (signstim handshapes --gallery F.png --view "
+                           "60,0 helps; docs/hand.md) and set \"version\": 2"
                      : "expected 2, got " + version.dump());
         }
         if (root.contains("fingerPresets")) parseFingerPresets(root["fingerPresets"]);

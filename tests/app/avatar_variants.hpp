@@ -51,6 +51,20 @@ inline void swingRest(render::Scene& s, const std::string& name, const std::stri
     turnRest(s, name, glm::angleAxis(glm::radians(degrees), axis));
 }
 
+// Turns `side`'s palm in the rest pose by `degrees` about its forearm, as an avatar modelled
+// so would be: the hand, and the wrist end of the forearm with it (the twist bones: all of it
+// at the wrist, half at the middle, when `twistBones`), the elbow end not.
+inline void rollPalmInRest(render::Scene& s, const std::string& side, float degrees, bool twistBones = true) {
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(s, render::restPose(s), world);
+    const glm::vec3 forearm = glm::normalize(glm::vec3(world[s.findNode(side + "Hand")][3]) -
+                                             glm::vec3(world[s.findNode(side + "LowerArm")][3]));
+    turnRest(s, side + "Hand", glm::angleAxis(glm::radians(degrees), forearm));
+    if (!twistBones) return;
+    turnRest(s, side + "ForearmTwistWrist", glm::angleAxis(glm::radians(degrees), forearm));
+    turnRest(s, side + "ForearmTwistMid", glm::angleAxis(glm::radians(0.5f * degrees), forearm));
+}
+
 // The default signer with a different rest pose: arms 40° down (A-pose), the right forearm
 // swung forward and its hand turned palm down about the forearm, fingers curled and splayed.
 // Every turn is one SignerRig can see in the skeleton, so the posed skin must match the
@@ -60,15 +74,7 @@ inline void useAnotherRestPose(render::Scene& s) {
     swingRest(s, "leftUpperArm", "leftLowerArm", forward, -40.0f);
     swingRest(s, "rightUpperArm", "rightLowerArm", forward, 40.0f);
     swingRest(s, "rightLowerArm", "rightHand", up, 15.0f);
-    std::vector<glm::mat4> world;
-    render::computeWorldTransforms(s, render::restPose(s), world);
-    const glm::vec3 forearm = glm::normalize(glm::vec3(world[s.findNode("rightHand")][3]) -
-                                             glm::vec3(world[s.findNode("rightLowerArm")][3]));
-    // Palm down: modelled so, the wrist end of the forearm turns with the hand (the twist
-    // bones: all of it at the wrist, half at the middle), the elbow end does not.
-    turnRest(s, "rightHand", glm::angleAxis(glm::radians(90.0f), forearm));
-    turnRest(s, "rightForearmTwistWrist", glm::angleAxis(glm::radians(90.0f), forearm));
-    turnRest(s, "rightForearmTwistMid", glm::angleAxis(glm::radians(45.0f), forearm));
+    rollPalmInRest(s, "right", 90.0f);  // palm down
     swingRest(s, "rightIndexProximal", "rightIndexIntermediate", forward, 30.0f);
     swingRest(s, "rightIndexIntermediate", "rightIndexDistal", up, 25.0f);
     swingRest(s, "leftLittleProximal", "leftLittleIntermediate", up, -20.0f);

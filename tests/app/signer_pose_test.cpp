@@ -234,8 +234,16 @@ TEST(SignerPose, AnAvatarNotStandingUprightIsRefused) {
             app::faceAvatarForward(s);
             ADD_FAILURE() << "accepted an avatar turned about " << axis.x << "," << axis.y << "," << axis.z;
         } catch (const InputError& e) {
-            EXPECT_NE(std::string(e.what()).find("lying.glb"), std::string::npos) << e.what();
-            EXPECT_NE(std::string(e.what()).find("+Y"), std::string::npos) << e.what();
+            const std::string message = e.what();
+            EXPECT_NE(message.find("lying.glb"), std::string::npos) << message;
+            EXPECT_NE(message.find("+Y"), std::string::npos) << message;
+            if (axis.z > 0.5f) {  // on its side: the shoulders are judged, and named
+                EXPECT_NE(message.find("leftUpperArm = node 'leftUpperArm'"), std::string::npos) << message;
+                EXPECT_NE(message.find("90° from level"), std::string::npos) << message;
+            } else {  // on its back: the head and hips are judged, and named
+                EXPECT_NE(message.find("head (node 'head')"), std::string::npos) << message;
+                EXPECT_NE(message.find("90° from vertical"), std::string::npos) << message;
+            }
         }
     }
 }
@@ -281,6 +289,64 @@ TEST(SignerPose, ABoneOfNoLengthIsRefusedNamingIt) {
         EXPECT_NE(message.find("flat.glb"), std::string::npos) << message;
         EXPECT_NE(message.find("rightIndexProximal"), std::string::npos) << message;
         EXPECT_NE(message.find("rightIndexIntermediate"), std::string::npos) << message;
+    }
+}
+
+// Largest rotation difference (degrees) between the posed comparedBones() of two rigs.
+float largestTurnDeg(const render::Scene& a, const app::SignerRig& rigA, const render::Scene& b,
+                     const app::SignerRig& rigB, const app::SignerPosture& posture, std::string* worst) {
+    const std::vector<glm::mat4> wa = posedJoints(a, rigA, posture), wb = posedJoints(b, rigB, posture);
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < wa.size(); ++i) {
+        const float d = hand::rotationAngleDeg(glm::quat_cast(glm::mat3(wa[i])), glm::quat_cast(glm::mat3(wb[i])));
+        if (d > largest) {
+            largest = d;
+            *worst = comparedBones()[i];
+        }
+    }
+    return largest;
+}
+
+TEST(SignerPose, ThePalmsRestRollIsMeasuredOnBothSidesAtAnyAngle) {
+    const app::SignerRig original(avatar());
+    app::SignerPosture posture;
+    posture.rightWrist = original.presentingTarget(hand::Side::Right);
+    posture.leftWrist = original.presentingTarget(hand::Side::Left);
+    for (float tilt : {0.0f, 40.0f}) {
+        for (float roll : {-150.0f, -90.0f, -45.0f, -15.0f, 15.0f, 45.0f, 90.0f, 150.0f}) {
+            render::Scene s = avatar();
+            test::swingRest(s, "leftUpperArm", "leftLowerArm", glm::vec3(0, 0, 1), -tilt);
+            test::swingRest(s, "rightUpperArm", "rightLowerArm", glm::vec3(0, 0, 1), tilt);
+            test::rollPalmInRest(s, "left", roll);
+            test::rollPalmInRest(s, "right", roll);
+            const app::SignerRig changed(s);
+            std::string worst;
+            EXPECT_LT(largestTurnDeg(s, changed, avatar(), original, posture, &worst), 0.1f)
+                << "tilt " << tilt << " roll " << roll << ": " << worst;
+        }
+    }
+}
+
+TEST(SignerPose, WithoutTwistBonesTheLowerArmTakesHalfThePalmsRoll) {
+    // An avatar without forearm twist bones (most VRM avatars): hide them by name.
+    for (float roll : {-120.0f, 90.0f}) {
+        render::Scene s = avatar();
+        for (const char* twist : {"rightForearmTwistMid", "rightForearmTwistWrist", "leftForearmTwistMid", "leftForearmTwistWrist"})
+            s.nodes[s.findNode(twist)].name = std::string("unmapped_") + twist;
+        render::Scene unrolled = s;
+        test::rollPalmInRest(s, "right", roll, false);
+        const app::SignerRig rolledRig(s), unrolledRig(unrolled);
+        app::SignerPosture posture;
+        posture.rightWrist = unrolledRig.presentingTarget(hand::Side::Right);
+        std::vector<glm::mat4> a, b;
+        render::computeWorldTransforms(s, rolledRig.pose(posture), a);
+        render::computeWorldTransforms(unrolled, unrolledRig.pose(posture), b);
+        const int lower = s.findNode("rightLowerArm"), palm = s.findNode("rightHand");
+        // The lower arm's skin (modelled half rolled) is turned back by half the roll; the hand lands
+        // exactly where it does on the unrolled avatar.
+        EXPECT_NEAR(hand::rotationAngleDeg(glm::quat_cast(glm::mat3(a[lower])), glm::quat_cast(glm::mat3(b[lower]))),
+                    0.5f * std::abs(roll), 0.1f) << roll;
+        EXPECT_LT(hand::rotationAngleDeg(glm::quat_cast(glm::mat3(a[palm])), glm::quat_cast(glm::mat3(b[palm]))), 0.1f) << roll;
     }
 }
 

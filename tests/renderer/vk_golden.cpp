@@ -67,7 +67,7 @@ std::string compareWithGolden(const Image& image, const std::string& name) {
     // its fail threshold, which would make the allowed fraction unreachable.
     const auto actualByte = [&](std::size_t i) {
         return image.format == PixelFormat::Rgba8 ? int(image.bytes[i])
-                                                  : int(reinterpret_cast<const std::uint16_t*>(image.bytes.data())[i] >> 8);
+                                                  : (int(reinterpret_cast<const std::uint16_t*>(image.bytes.data())[i]) * 255 + 32767) / 65535;
     };
     std::size_t failing = 0;
     int largest = 0;
