@@ -143,43 +143,37 @@ float palmClearanceMm(const HandModel& model, const Capsule& capsule, Side side)
     // The slab's outline. Only where the bone's axis lies over it is the bone measured: one
     // beside the palm (the thumb along the index in G) lies against its side, which is not
     // sinking into it, and the rectangle is no model of the palm's side near the thumb.
-    const float r = capsule.radiusMm;
     const float yMin = model.mcpPositionMm[3].y - 0.5f * d.pipWidthMm[3];
     const float yMax = model.mcpPositionMm[0].y + 0.5f * d.pipWidthMm[0];
     const float zMin = d.palmWristZMm, zMax = palmKnuckleZMm(model);
-    // Clip the axis a + t(b - a), t in [0, 1], to where g(t) >= 0 for g linear in t.
+    const auto at = [&](float t) { return a + t * (b - a); };
+    // Clip the axis a + t(b - a) to [t0, t1] where g(t) >= 0, for each g linear in t over the
+    // part kept so far.
     float t0 = 0.0f, t1 = 1.0f;
-    const auto keepWhereNonNegative = [&](float g0, float g1) {
+    const auto keepWhereNonNegative = [&](const auto& g) {
+        if (t0 > t1) return;
+        const float g0 = g(at(t0)), g1 = g(at(t1));
         if (g0 < 0.0f && g1 < 0.0f) {
             t1 = -1.0f;
         } else if (g0 < 0.0f || g1 < 0.0f) {
-            const float t = g0 / (g0 - g1);  // where g crosses zero
-            if (g0 < 0.0f) t0 = std::max(t0, t); else t1 = std::min(t1, t);
+            const float t = t0 + (t1 - t0) * g0 / (g0 - g1);  // where g crosses zero
+            (g0 < 0.0f ? t0 : t1) = t;
         }
     };
-    keepWhereNonNegative(a.y - yMin, b.y - yMin);
-    keepWhereNonNegative(yMax - a.y, yMax - b.y);
-    keepWhereNonNegative(a.z - zMin, b.z - zMin);
-    keepWhereNonNegative(zMax - a.z, zMax - b.z);
-    if (t0 > t1) return std::numeric_limits<float>::infinity();
-    const auto at = [&](float t) { return a + t * (b - a); };
+    keepWhereNonNegative([&](const glm::vec3& p) { return p.y - yMin; });
+    keepWhereNonNegative([&](const glm::vec3& p) { return yMax - p.y; });
+    keepWhereNonNegative([&](const glm::vec3& p) { return p.z - zMin; });
+    keepWhereNonNegative([&](const glm::vec3& p) { return zMax - p.z; });
     // Only the palmar side: a bone behind the back of the hand (dorsal of the slab) is not in
-    // the palm. The dorsal surface is linear in z, hence in t, over the clipped part.
-    const auto dorsalGap = [&](float t) {
-        const glm::vec3 p = at(t);
-        return p.x - (2.0f * d.palmCentreXMm - palmarSurfaceXMm(model, p.z));
-    };
-    const float s0 = t0, s1 = t1;
-    const float g0 = dorsalGap(s0), g1 = dorsalGap(s1);
-    if (g0 < 0.0f && g1 < 0.0f) return std::numeric_limits<float>::infinity();
-    if (g0 < 0.0f) t0 = s0 + (s1 - s0) * g0 / (g0 - g1);
-    if (g1 < 0.0f) t1 = s0 + (s1 - s0) * g0 / (g0 - g1);
+    // the palm. The back surface is linear in z, hence in t, once z is within the slab.
+    keepWhereNonNegative([&](const glm::vec3& p) { return p.x - (2.0f * d.palmCentreXMm - palmarSurfaceXMm(model, p.z)); });
+    if (t0 > t1) return std::numeric_limits<float>::infinity();
     // Height above the palmar surface is linear in t there too, so its minimum is at an end.
     const auto above = [&](float t) {
         const glm::vec3 p = at(t);
         return p.x - palmarSurfaceXMm(model, p.z);
     };
-    return std::min(above(t0), above(t1)) - r;
+    return std::min(above(t0), above(t1)) - capsule.radiusMm;
 }
 
 float capsuleGap(const Capsule& a, const Capsule& b) {
