@@ -1,7 +1,7 @@
 #pragma once
 // Values given on the command line as text (--size 640x480, --gaze 0,100,400, --background
 // '#ffffff'): one parser each, shared by every command. Each throws
-// InputError("<command line>", 0, FLAG, "expected ..., got '...'") (exit status 2).
+// InputError("<command line>", 0, FLAG, "expected ..., got '...'") (exit status 1: usage).
 #include "common/error.hpp"
 
 #include <glm/vec3.hpp>
@@ -14,7 +14,7 @@
 
 namespace signstim::app {
 
-inline constexpr const char* kCommandLine = "<command line>";  // the "file" of flag errors
+using signstim::kCommandLine;  // the "file" of flag errors (common/error.hpp)
 
 // InputError("<command line>", 0, flag, message), for checks of one command's own.
 InputError commandLineError(const std::string& flag, const std::string& message);

@@ -20,8 +20,9 @@ int main(int argc, char** argv) {
     root.require_subcommand(1);
     root.footer(
         "\nRun `signstim COMMAND --help` for the options of one command.\n"
-        "Exit status: 0 success, 1 usage error, 2 bad input (the message names the file, line\n"
-        "and field), 3 environment problem (no Vulkan device, ffmpeg missing, disk full).");
+        "Exit status: 0 success, 1 bad command line (unknown flag, value out of range), 2 bad input\n"
+        "file (the message names the file, line and field), 3 failed read or write, or a missing\n"
+        "device or program (no Vulkan device, ffmpeg missing, disk full). docs/errors.md has more.");
 
     CLI::App* bench = root.add_subcommand(
         "bench", "Measure performance: prints figures and ratios (see BENCHMARKS.md)");
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
         return root.exit(e) == 0 ? 0 : 1;
     } catch (const InputError& e) {
         std::fprintf(stderr, "signstim: error: %s\n", e.what());
-        return 2;
+        return e.isCommandLine() ? 1 : 2;
     } catch (const EnvironmentError& e) {
         std::fprintf(stderr, "signstim: error: %s\n", e.what());
         return 3;

@@ -1,5 +1,7 @@
 #include "common/error.hpp"
 
+#include <cstring>
+
 namespace signstim {
 namespace {
 std::string compose(const std::string& file, int line, const std::string& field,
@@ -25,5 +27,12 @@ InputError::InputError(std::string file, int line, std::string field, const std:
 
 InputError::InputError(const std::string& message)
     : std::runtime_error(message), detail_(message) {}
+
+IoError::IoError(std::string path, const std::string& action, int errorNumber)
+    : IoError(std::move(path), action, errorNumber != 0 ? std::string(std::strerror(errorNumber)) : std::string()) {}
+
+IoError::IoError(std::string path, const std::string& action, const std::string& reason)
+    : EnvironmentError(path + ": " + action + (reason.empty() ? std::string() : ": " + reason)),
+      path_(std::move(path)) {}
 
 }  // namespace signstim

@@ -8,6 +8,10 @@
 
 namespace signstim {
 
+// The "file" of errors about flags and arguments. An InputError naming it is a usage error:
+// exit status 1 in every command (docs/errors.md), whatever the check that found it.
+inline constexpr const char* kCommandLine = "<command line>";
+
 class InputError : public std::runtime_error {
 public:
     // file: path or other name of the input ("<command line>" for flags); line: 1-based, 0
@@ -19,6 +23,7 @@ public:
     int line() const { return line_; }
     const std::string& field() const { return field_; }
     const std::string& detail() const { return detail_; }
+    bool isCommandLine() const { return file_ == kCommandLine; }
 
 private:
     std::string file_;
@@ -32,6 +37,20 @@ private:
 class EnvironmentError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+};
+
+// A read or write the system refused (disk full, permission denied, I/O error): exit status 3.
+// The message names the path and what the system said: "out/a.png: cannot write: No space
+// left on device". Pass the errno captured right after the failing call (0: no system text).
+class IoError : public EnvironmentError {
+public:
+    IoError(std::string path, const std::string& action, int errorNumber);
+    IoError(std::string path, const std::string& action, const std::string& reason);
+
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
 };
 
 }  // namespace signstim

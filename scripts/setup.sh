@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages signstim needs, only those that are missing.
-# Idempotent; runs apt-get as root, or through sudo when not root. Says what it installs.
+# Idempotent; runs apt-get as root, or through sudo when not root. Prints what it installs
+# and that it is done; apt's own output goes to a log, shown only when apt fails.
 set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config git
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
-  libglm-dev libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libeigen3-dev
+  libglm-dev libtinygltf-dev nlohmann-json3-dev libeigen3-dev
   libcli11-dev libgtest-dev
   ffmpeg
+  # OpenImageIO's CMake package (libopenimageio-dev) names its command-line tools as imported
+  # targets and refuses to configure when /usr/bin/iconvert & co. are missing; they live in
+  # openimageio-tools, which --no-install-recommends leaves out.
+  libopenimageio-dev openimageio-tools
 )
 
 missing=()
@@ -35,7 +40,13 @@ else
 fi
 
 echo "setup: installing ${#missing[@]} missing package(s): ${missing[*]}"
+log=$(mktemp "${TMPDIR:-/tmp}/signstim-setup.XXXXXX.log")
 export DEBIAN_FRONTEND=noninteractive
-"${sudo[@]}" apt-get update -qq
-"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if ! { "${sudo[@]}" apt-get update -q && \
+       "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"; } >"$log" 2>&1; then
+  echo "setup: apt-get failed; its last lines (whole log: $log):" >&2
+  tail -n 25 "$log" >&2
+  exit 1
+fi
+rm -f "$log"
 echo "setup: done."
