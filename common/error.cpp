@@ -4,12 +4,13 @@
 
 namespace signstim {
 namespace {
-std::string compose(const std::string& file, int line, const std::string& field,
+std::string compose(const std::string& file, int line, int column, const std::string& field,
                     const std::string& message) {
     std::string text;
     if (!file.empty()) {
         text += file;
         if (line > 0) text += ":" + std::to_string(line);
+        if (line > 0 && column > 0) text += ":" + std::to_string(column);
         text += ": ";
     }
     if (!field.empty()) text += "field '" + field + "': ";
@@ -19,9 +20,13 @@ std::string compose(const std::string& file, int line, const std::string& field,
 }  // namespace
 
 InputError::InputError(std::string file, int line, std::string field, const std::string& message)
-    : std::runtime_error(compose(file, line, field, message)),
+    : InputError(std::move(file), line, 0, std::move(field), message) {}
+
+InputError::InputError(std::string file, int line, int column, std::string field, const std::string& message)
+    : std::runtime_error(compose(file, line, column, field, message)),
       file_(std::move(file)),
       line_(line),
+      column_(column),
       field_(std::move(field)),
       detail_(message) {}
 

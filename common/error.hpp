@@ -17,10 +17,14 @@ public:
     // file: path or other name of the input ("<command line>" for flags); line: 1-based, 0
     // if unknown; field: JSON pointer, CSV column, flag name... (may be empty).
     InputError(std::string file, int line, std::string field, const std::string& message);
+    // With a 1-based column as well ("story.json:12:31: ..."), for gloss and other text
+    // where the line alone does not say where.
+    InputError(std::string file, int line, int column, std::string field, const std::string& message);
     explicit InputError(const std::string& message);
 
     const std::string& file() const { return file_; }
     int line() const { return line_; }
+    int column() const { return column_; }
     const std::string& field() const { return field_; }
     const std::string& detail() const { return detail_; }
     bool isCommandLine() const { return file_ == kCommandLine; }
@@ -28,6 +32,7 @@ public:
 private:
     std::string file_;
     int line_ = 0;
+    int column_ = 0;
     std::string field_;
     std::string detail_;
 };
