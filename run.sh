@@ -12,12 +12,15 @@ case "$mode" in
   *) echo "usage: ./run.sh [run|test]" >&2; exit 1 ;;
 esac
 
+start=$SECONDS
 scripts/setup.sh
+installed=$SECONDS
 
 build=${SIGNSTIM_BUILD_DIR:-build}
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j "$jobs"
+echo "run.sh: install $((installed - start)) s, build $((SECONDS - installed)) s"
 
 if [[ $mode == test ]]; then
   # lavapipe renders with several threads per draw; two test processes keep both cores busy.
