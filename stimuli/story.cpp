@@ -191,10 +191,10 @@ private:
             if (parsed.error || parsed.items.size() != 1 || parsed.items[0].kind != GlossItemKind::Word ||
                 parsed.items[0].hasArgumentList)
                 fail(line, pointer + "/gloss", "'" + character.gloss + "' is not a gloss name (capitals, e.g. JOHN)");
-            if (vocabulary_.verbs->find(character.gloss) || character.gloss == "IX" || character.gloss == "HOLD" ||
-                std::find(vocabulary_.signs.begin(), vocabulary_.signs.end(), character.gloss) != vocabulary_.signs.end())
+            if (vocabulary_.verbs->find(character.gloss) || character.gloss == "IX" || character.gloss == "HOLD")
                 fail(line, pointer + "/gloss",
-                     "'" + character.gloss + "' is already a sign or verb; give the character another gloss name");
+                     "'" + character.gloss + "' is a verb or a gloss keyword; give the character another gloss name");
+            if (isSign(character.gloss)) character.nameSign = character.gloss;
             if (story_.characterIndex(character.gloss) >= 0)
                 fail(line, pointer + "/gloss", "two characters are called " + character.gloss);
             if (!entry.contains("position") || !entry["position"].is_number())
@@ -210,6 +210,8 @@ private:
                              json(other.position).dump() +
                              " are too close to tell apart when pointing; keep characters at least 0.2 apart");
             if (entry.contains("nameSign")) {
+                if (!character.nameSign.empty())
+                    fail(line, pointer + "/nameSign", character.gloss + " is a sign and is signed with it; drop \"nameSign\"");
                 if (!entry["nameSign"].is_string()) fail(line, pointer + "/nameSign", "expected a lexicon gloss in quotes");
                 character.nameSign = entry["nameSign"].get<std::string>();
                 requireSign(character.nameSign, line, 0, pointer + "/nameSign");
@@ -228,8 +230,13 @@ private:
         }
     }
 
+    bool isSign(const std::string& gloss) const {
+        if (vocabulary_.isSign) return vocabulary_.isSign(gloss);
+        return std::find(vocabulary_.signs.begin(), vocabulary_.signs.end(), gloss) != vocabulary_.signs.end();
+    }
+
     void requireSign(const std::string& gloss, int line, int column, const std::string& field) const {
-        if (std::find(vocabulary_.signs.begin(), vocabulary_.signs.end(), gloss) != vocabulary_.signs.end()) return;
+        if (isSign(gloss)) return;
         std::vector<std::string> known = vocabulary_.signs;
         for (const VerbDefinition& verb : vocabulary_.verbs->verbs) known.push_back(verb.name);
         for (const StoryCharacter& character : story_.characters) known.push_back(character.gloss);

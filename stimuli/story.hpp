@@ -23,7 +23,10 @@ namespace signstim::stimuli {
 struct StoryCharacter {
     std::string gloss;       // "JOHN": how the sentences name the character
     double position = 0.0;   // arc position, SPEC §3.1
-    std::string nameSign;    // a lexicon sign used as the name; empty: fingerspelled
+    // A lexicon sign used as the name; empty: fingerspelled. A character whose gloss is a
+    // sign (TEACHER, COACH) is signed with it, and within the story that gloss means the
+    // character.
+    std::string nameSign;
     std::string spelled;     // the letters fingerspelled (default: the gloss)
     std::string description; // "a student", for the experimenter
     int line = 0;
@@ -74,7 +77,8 @@ struct Story {
 // fingerspelled (those with a handshape, and J and Z with their path).
 struct StoryVocabulary {
     const VerbLibrary* verbs = nullptr;
-    std::vector<std::string> signs;                // lexicon glosses (sorted or not)
+    std::vector<std::string> signs;                // lexicon glosses, also for "closest known" hints
+    std::function<bool(std::string_view)> isSign;  // nullptr: membership of `signs`
     std::function<bool(char)> canFingerspell;      // nullptr: every letter A-Z
 };
 
