@@ -5,7 +5,9 @@
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "app/signer_pose.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "renderer/frame_sink.hpp"
 #include "renderer/gltf_loader.hpp"
 #include "renderer/gltf_writer.hpp"
 #include "renderer/image_io.hpp"
@@ -64,6 +66,14 @@ void renderToFile(const render::Scene& scene, const std::function<render::Frame(
     render::writeImage(image, out);
 }
 
+// Before any work: `out` must name an image file the writers handle, in a place that
+// accepts new files (exit 1 for the name, 3 for the place).
+void checkImageOutput(const std::string& out, const std::string& flag) {
+    if (render::outputKind(out, flag) != render::OutputKind::Image)
+        throw commandLineError(flag, "'" + out + "': give an image file name ending in .png, .exr, .tif or .tiff");
+    checkOutputWritable(out);
+}
+
 void reportArm(const char* side, const hand::ArmPose& arm) {
     if (!arm.reachable)
         std::fprintf(stderr, "signstim: note: %s wrist target out of reach: placed %.0f mm from it\n", side,
@@ -84,6 +94,10 @@ void registerAvatarCommands(Commands& commands) {
         "build", "Generate the default signer (glTF: .glb or .gltf); scenes/avatar/signer.glb is its output");
     build->add_option("--out", *buildOut, "Output file (.glb or .gltf)")->required();
     build->callback([buildOut] {
+        const std::string extension = std::filesystem::path(*buildOut).extension().string();
+        if (extension != ".glb" && extension != ".gltf")
+            throw commandLineError("--out", "'" + *buildOut + "': give a file name ending in .glb or .gltf");
+        checkOutputWritable(*buildOut);
         render::writeGltf(buildDefaultAvatar(), *buildOut);
         std::printf("%s\n", buildOut->c_str());
     });
@@ -109,6 +123,7 @@ void registerAvatarCommands(Commands& commands) {
     addAvatarOptions(shapes, g->source);
     shapes->callback([g] {
         const GalleryView view = parseGalleryView(g->view);
+        checkImageOutput(g->gallery, "--gallery");
         const render::Scene scene = loadAvatar(g->source);
         const SignerRig rig(scene, mappingOf(g->source));
         const stimuli::HandshapeLibrary library =
@@ -147,6 +162,7 @@ void registerAvatarCommands(Commands& commands) {
     addAvatarOptions(pose, p->source);
     pose->callback([p] {
         const ImageSize size = parseImageSize(p->size, "--size", {.minimum = 16, .maximum = 8192});
+        checkImageOutput(p->out, "--out");
         const std::uint32_t width = size.width, height = size.height;
         const render::Scene scene = loadAvatar(p->source);
         const SignerRig rig(scene, mappingOf(p->source));

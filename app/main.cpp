@@ -1,16 +1,38 @@
 // The `signstim` command: parses arguments, wires stimuli -> renderer, reports progress.
 #include "app/commands.hpp"
+#include "common/cleanup.hpp"
 #include "common/error.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 
 #ifndef SIGNSTIM_VERSION
 #define SIGNSTIM_VERSION "0.0.0"
 #endif
 
+namespace {
+
+// What a command printed on stdout (JSON, tables) is its result: a write that failed there
+// (disk full, /dev/full, a closed pipe) fails the run. stdio keeps unwritten bytes and an
+// error flag; flushing retries the write, so errno is the system's answer to that write.
+int checkStandardOutput() {
+    errno = 0;
+    int error = 0;
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) error = errno != 0 ? errno : EIO;
+    if (std::fclose(stdout) != 0 && error == 0) error = errno != 0 ? errno : EIO;
+    if (error == 0) return 0;
+    std::fprintf(stderr, "signstim: error: cannot write to standard output: %s\n", std::strerror(error));
+    return 3;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     using namespace signstim;
+    // First, before any thread exists: signals then reach only the thread that cleans up.
+    startInterruptHandling();
     CLI::App root{
         "signstim — stimulus videos for studies of animated ASL verbs.\n"
         "Renders a signer headless (Vulkan; Mesa lavapipe when no GPU is present) from the data\n"
@@ -22,7 +44,8 @@ int main(int argc, char** argv) {
         "\nRun `signstim COMMAND --help` for the options of one command.\n"
         "Exit status: 0 success, 1 bad command line (unknown flag, value out of range), 2 bad input\n"
         "file (the message names the file, line and field), 3 failed read or write, or a missing\n"
-        "device or program (no Vulkan device, ffmpeg missing, disk full). docs/errors.md has more.");
+        "device or program (no Vulkan device, ffmpeg missing, disk full), 130/143 interrupted by\n"
+        "SIGINT/SIGTERM (nothing incomplete is left). docs/errors.md has more.");
 
     CLI::App* bench = root.add_subcommand(
         "bench", "Measure performance: prints figures and ratios (see BENCHMARKS.md)");
@@ -51,5 +74,5 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "signstim: internal error: %s\n", e.what());
         return 4;
     }
-    return 0;
+    return checkStandardOutput();
 }

@@ -71,12 +71,6 @@ int chooseAnimation(const render::Scene& scene, const std::string& request, cons
                          (names.empty() ? " (it has none)" : " (it has: " + names + ")"));
 }
 
-std::string lowerExtension(const fs::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 void renderGltf(const RenderGltfSettings& s) {
     using Clock = std::chrono::steady_clock;
     render::RendererOptions options;
@@ -91,14 +85,14 @@ void renderGltf(const RenderGltfSettings& s) {
     if (s.pngCompression < 0 || s.pngCompression > 9) throw commandLineError("--png-compression", "must be 0..9");
     render::VideoOptions video;
     video.frameRate = render::parseFrameRate(s.fps);
+    const fs::path out = s.out;
+    const render::OutputKind kind = render::outputKind(out);
 
     const render::Scene scene = render::loadGltf(s.file);
     const int animation = chooseAnimation(scene, s.animation, s.file);
     const float duration = animation >= 0 ? scene.animations[static_cast<std::size_t>(animation)].durationSeconds : 0.0f;
 
-    const fs::path out = s.out;
-    const std::string ext = lowerExtension(out);
-    const bool singleImage = ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff";
+    const bool singleImage = kind == render::OutputKind::Image;
     int frames = s.frames;
     if (frames < 0) throw commandLineError("--frames", "must be at least 1");
     if (frames == 0)
@@ -106,10 +100,11 @@ void renderGltf(const RenderGltfSettings& s) {
     if (singleImage && frames > 1)
         throw InputError(out.string(), 0, "--frames", std::to_string(frames) +
                                                           " frames need a directory or an .mp4 output, not a single image");
-    if (ext == ".mp4" && (options.width % 2 || options.height % 2))
+    if (kind == render::OutputKind::Video && (options.width % 2 || options.height % 2))
         throw commandLineError("--size", s.size + ": MP4 (H.264, yuv420p) needs an even width and height");
     // Fail on a bad output location now, not after rendering.
-    ensureWritableDirectory(singleImage || ext == ".mp4" ? out.parent_path() : out);
+    if (kind == render::OutputKind::Folder) render::checkFrameFolder(out);
+    checkOutputWritable(out);
 
     // Frame i shows the animation at duration * i / (frames - 1): first and last key included.
     auto timeOf = [&](int i) { return frames > 1 ? duration * static_cast<float>(i) / static_cast<float>(frames - 1) : 0.0f; };
@@ -187,7 +182,8 @@ void registerRenderCommands(Commands& commands) {
         "Frames sample the chosen animation evenly from its start to its end.");
     cmd->add_option("FILE", settings->file, "glTF file (.gltf with external or embedded buffers, or .glb)")->required();
     cmd->add_option("--out,-o", settings->out,
-                    "OUT.png (one frame), OUT.mp4 (H.264 video) or a directory (frame_00001.png ...)")
+                    "OUT.png/.exr/.tif (one frame), OUT.mp4 (H.264 video) or a folder (frame_00001.png ...;\n"
+                    "a new folder, or one holding only an earlier render's frames, which it replaces whole)")
         ->required();
     cmd->add_option("--size", settings->size, "WIDTHxHEIGHT (default 640x480; even for MP4)");
     cmd->add_option("--frames", settings->frames,

@@ -85,9 +85,12 @@ void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, co
     const std::uint32_t width = size.width, height = size.height;
     const render::FrameRate frameRate = render::parseFrameRate(o.fps);
     const std::filesystem::path out(o.outPath);
+    // The output's kind and place are checked before anything is loaded or rendered.
+    const render::OutputKind kind = render::outputKind(out);
+    if (kind == render::OutputKind::Folder) render::checkFrameFolder(out);
+    checkOutputWritable(out);
     const Signer signer(scenesDir, o.avatarFile, o.boneMapFile.empty() ? BoneMapping{} : loadBoneMapping(o.boneMapFile));
     const VerbClip clip(signer.rig(), signer.shapes(), performance);
-    ensureWritableDirectory(out.has_extension() ? out.parent_path() : out);
 
     render::Renderer renderer(signerRendererOptions(width, height, o.msaa, o.device));
     const int handle = renderer.addScene(signer.avatar());
@@ -95,7 +98,7 @@ void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, co
     options.framesPerSecond = frameRate.value();
     render::VideoOptions video;
     video.frameRate = frameRate;
-    const bool still = out.extension() == ".png";
+    const bool still = kind == render::OutputKind::Image;
     std::unique_ptr<render::FrameSink> target = still ? render::makeDiscardSink() : render::makeFrameSink(out, {}, video);
     StillCapturingSink sink(*target, static_cast<std::uint64_t>(clip.middleOfVerbSeconds() * options.framesPerSecond));
     const std::uint64_t frames =
@@ -157,7 +160,8 @@ void registerVerbCommands(Commands& commands) {
         verb->add_option("--version", o->version, "point | vector | animator | uninflected")->required();
         auto* jsonFlag = verb->add_flag("--json", o->json, "Print the keyframes (per hand: time, position, orientation, handshape) as JSON");
         verb->add_option("--out", o->outPath,
-                         "Render the signer: FILE.mp4 (video), FILE.png (the middle frame) or DIR (frame_00001.png ...)")
+                         "Render the signer: FILE.mp4 (video), FILE.png/.exr/.tif (the middle frame) or DIR (frame_00001.png ...;\n"
+                         "a new folder, or one holding only an earlier render's frames, which it replaces whole)")
             ->excludes(jsonFlag);
         verb->add_option("--size", o->size, "Rendered image size WxH (even for .mp4)")->capture_default_str();
         verb->add_option("--fps", o->fps, "Frame rate: 30, 25, 30000/1001 ...")->capture_default_str();

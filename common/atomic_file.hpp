@@ -1,36 +1,81 @@
 #pragma once
-// Output files appear atomically: written to a temporary beside the target, then renamed.
-// An interrupted run therefore never leaves a truncated file under the final name.
-#include <cstdio>
+// Every output file goes through here (docs/errors.md, "What is left on disk").
+//  - A file is written to a temporary beside its target and renamed onto it only when every
+//    byte was written and the file closed without error: a failure (disk full, I/O error) or
+//    an interruption never leaves an incomplete file under the final name.
+//  - A folder of frames is written as a unit: into a temporary sibling folder, renamed into
+//    place at the end (TemporaryFolder).
+//  - Each write, close and rename is checked; errno is captured right after the failing call
+//    and reported as IoError ("out/a.png: cannot write: No space left on device", exit 3).
+//  - Temporaries are created under the cleanup registry's lock and registered
+//    (common/cleanup.hpp), so a signal removes them too.
+// No fsync: the promise is about failed and interrupted runs, not power loss, and syncing
+// every frame of a PNG sequence would cost more than encoding it.
 #include <filesystem>
 #include <string>
 #include <string_view>
 
 namespace signstim {
 
-// Writes `bytes` to `path` atomically. Creates missing parent directories. Throws
-// InputError naming the path when the location is not writable.
+// Writes `bytes` to `path` atomically. Creates missing parent folders. Throws IoError naming
+// `path` with the system's reason.
 void writeFileAtomic(const std::filesystem::path& path, std::string_view bytes);
 
-// A temporary path next to `target` (same directory, so rename() is atomic), unique per
-// process and call. The caller writes it and then calls commitAtomic().
+// Creates `path` (which must not exist: typically inside a TemporaryFolder) and writes
+// `bytes` to it, removing it again on failure. Errors name `nameInMessages` (the file's
+// final name; default `path`).
+void writeNewFile(const std::filesystem::path& path, std::string_view bytes,
+                  const std::filesystem::path& nameInMessages = {});
+
+// A temporary name next to `target` (same folder, so rename() is atomic), unique per process
+// and call: TARGET.tmp-PID-N.
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 
-// Renames `temporary` onto `target`; removes `temporary` and throws on failure.
-void commitAtomic(const std::filesystem::path& temporary, const std::filesystem::path& target);
-
-// Makes sure `dir` exists and is writable (creating it if needed), else throws InputError
-// naming it. Call before long work so a bad --out fails in the first second.
+// Makes sure `dir` exists (creating it and its parents) and that a file can be created in it,
+// by creating and removing one. Throws IoError naming `dir` with the system's reason. Call
+// before long work so a bad output location fails in the first second.
 void ensureWritableDirectory(const std::filesystem::path& dir);
 
-// RAII guard: removes the temporary file unless commit() was called (error paths leave
-// nothing behind).
+// The same check for an output `target` (a file, or a frame folder written as a unit): its
+// parent folder is created if missing and must accept a new file. Errors name `target`.
+void checkOutputWritable(const std::filesystem::path& target);
+
+// A temporary file beside `target`, created empty (O_EXCL) and registered for removal on a
+// signal. Removed when destroyed without commit(). Write it with write(), or let another
+// program write it (ffmpeg), then commit().
 class TemporaryFile {
 public:
     explicit TemporaryFile(std::filesystem::path target);
     ~TemporaryFile();
     TemporaryFile(const TemporaryFile&) = delete;
     TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+    const std::filesystem::path& path() const { return temporary_; }
+    const std::filesystem::path& target() const { return target_; }
+    // The open file (write-only), e.g. to hand to a child process as its output.
+    int descriptor() const { return descriptor_; }
+    // Appends all of `bytes`; IoError naming the target on failure.
+    void write(std::string_view bytes);
+    // Closes the file (checked) and renames it onto the target.
+    void commit();
+
+private:
+    std::filesystem::path target_;
+    std::filesystem::path temporary_;
+    int descriptor_ = -1;
+    bool committed_ = false;
+};
+
+// A temporary folder beside `target` (TARGET.tmp-PID-N), created and registered for removal
+// on a signal; removed with its contents when destroyed without commit(). commit() puts it in
+// place of `target`: renamed when `target` does not exist, else exchanged with it atomically
+// and the old folder removed (the caller checks beforehand that replacing it is wanted).
+class TemporaryFolder {
+public:
+    explicit TemporaryFolder(std::filesystem::path target);
+    ~TemporaryFolder();
+    TemporaryFolder(const TemporaryFolder&) = delete;
+    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
 
     const std::filesystem::path& path() const { return temporary_; }
     const std::filesystem::path& target() const { return target_; }

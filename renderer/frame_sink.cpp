@@ -147,12 +147,15 @@ private:
     bool written_ = false;
 };
 
+// The folder is written as a unit (docs/errors.md): frames go into a temporary sibling folder
+// that replaces `directory` only at finish(), so a failed or interrupted render leaves either
+// nothing or the earlier render untouched, and a shorter re-render leaves no stale frames.
 class PngSequenceSink final : public FrameSink {
 public:
     PngSequenceSink(fs::path directory, ImageWriteOptions options, unsigned threads)
         : directory_(std::move(directory)), options_(options),
-          queue_(2 * std::max(1u, threads)), spares_(2 * std::max(1u, threads) + 2) {
-        ensureWritableDirectory(directory_);
+          queue_(2 * std::max(1u, threads)), spares_(2 * std::max(1u, threads) + 2),
+          folder_(prepared(directory_, options_)) {
         for (unsigned t = 0; t < std::max(1u, threads); ++t) workers_.emplace_back([this] { run(); });
     }
     ~PngSequenceSink() override {
@@ -166,11 +169,21 @@ public:
         queue_.close();
         join();
         queue_.rethrow();
+        folder_.commit();
     }
     std::uint64_t framesPushed() const override { return pushed_; }
     bool recycle(Image& out) override { return spares_.take(out); }
 
 private:
+    // Checks made before any frame is rendered; then the temporary folder's target.
+    static fs::path prepared(const fs::path& directory, const ImageWriteOptions& options) {
+        if (options.pngCompression < 0 || options.pngCompression > 9)
+            throw InputError(directory.string(), 0, "png-compression",
+                             "must be 0..9, got " + std::to_string(options.pngCompression));
+        checkFrameFolder(directory);
+        checkOutputWritable(directory);
+        return directory;
+    }
     struct Job {
         std::uint64_t number;
         Image image;
@@ -179,7 +192,11 @@ private:
         lowerThisThreadPriority();
         while (auto job = queue_.pop()) {
             try {
-                writeImage(job->image, directory_ / sequenceFrameName(job->number), options_);
+                const std::string name = sequenceFrameName(job->number);
+                const std::vector<std::uint8_t> bytes = encodePng(job->image, options_);
+                writeNewFile(folder_.path() / name,
+                             std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                             directory_ / name);
                 spares_.give(std::move(job->image));
             } catch (...) {
                 queue_.fail(std::current_exception());
@@ -194,6 +211,7 @@ private:
     ImageWriteOptions options_;
     WorkQueue<Job> queue_;
     SparePool spares_;
+    TemporaryFolder folder_;  // removed with its frames unless finish() put it in place
     std::vector<std::thread> workers_;
     std::uint64_t pushed_ = 0;
 };
@@ -204,7 +222,7 @@ public:
         : file_(std::move(file)), options_(std::move(options)), queue_(queueFrames),
           spares_(std::max(1u, queueFrames) + 2) {
         if (options_.niceness == 0) options_.niceness = kEncoderNiceness;
-        ensureWritableDirectory(file_.parent_path());
+        checkOutputWritable(file_);
     }
     ~VideoSink() override {
         queue_.fail(std::make_exception_ptr(std::runtime_error("abandoned")));
@@ -274,7 +292,7 @@ private:
 }  // namespace
 
 std::unique_ptr<FrameSink> makeImageFileSink(const fs::path& file, const ImageWriteOptions& options) {
-    ensureWritableDirectory(file.parent_path());
+    checkOutputWritable(file);
     return std::make_unique<ImageFileSink>(file, options);
 }
 
@@ -292,10 +310,42 @@ std::unique_ptr<FrameSink> makeDiscardSink() { return std::make_unique<DiscardSi
 
 std::unique_ptr<FrameSink> makeFrameSink(const fs::path& output, const ImageWriteOptions& imageOptions,
                                          const VideoOptions& videoOptions) {
-    const std::string ext = lowerExtension(output);
-    if (ext == ".mp4") return makeVideoSink(output, videoOptions);
-    if (ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff") return makeImageFileSink(output, imageOptions);
+    switch (outputKind(output)) {
+        case OutputKind::Video: return makeVideoSink(output, videoOptions);
+        case OutputKind::Image: return makeImageFileSink(output, imageOptions);
+        case OutputKind::Folder: break;
+    }
     return makePngSequenceSink(output, imageOptions);
+}
+
+OutputKind outputKind(const fs::path& output, const std::string& flag) {
+    const std::string ext = lowerExtension(output);
+    if (ext == ".mp4") return OutputKind::Video;
+    if (ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff") return OutputKind::Image;
+    if (ext.empty()) return OutputKind::Folder;
+    // A folder named "a.jpg" is almost certainly not what was meant.
+    throw InputError(kCommandLine, 0, flag,
+                     "'" + output.string() + "': no writer for '" + output.extension().string() +
+                         "' files; use .mp4 (video), .png, .exr, .tif or .tiff (one image), or a folder name "
+                         "without an extension (frame_00001.png ...)");
+}
+
+void checkFrameFolder(const fs::path& directory) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(directory, ec);
+    if (!fs::exists(status)) return;
+    const std::string advice = "; choose a new or empty folder (a folder holding only an earlier render's "
+                               "frame_NNNNN.png files is replaced whole)";
+    if (!fs::is_directory(status))
+        throw InputError(directory.string(), 0, "", "exists and is not a folder" + advice);
+    for (fs::directory_iterator it(directory, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        bool frame = name.size() >= 15 && name.rfind("frame_", 0) == 0 && name.ends_with(".png") &&
+                     it->is_regular_file(ec);
+        for (std::size_t i = 6; frame && i + 4 < name.size(); ++i) frame = name[i] >= '0' && name[i] <= '9';
+        if (!frame) throw InputError(directory.string(), 0, "", "holds '" + name + "', which is not a rendered frame" + advice);
+    }
+    if (ec) throw IoError(directory.string(), "cannot read", ec.message());
 }
 
 }  // namespace signstim::render

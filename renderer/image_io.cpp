@@ -27,21 +27,24 @@ float srgbToLinear(float c) {
 
 }  // namespace
 
-void writeImage(const Image& image, const fs::path& path, const ImageWriteOptions& options) {
-    const std::string file = path.string();
+namespace {
+
+// "png", "openexr" or "tiff" by the file's extension; InputError naming the file otherwise.
+std::string formatOf(const fs::path& path) {
     const std::string ext = lowerExtension(path);
-    std::string format;
-    if (ext == ".png") format = "png";
-    else if (ext == ".exr") format = "openexr";
-    else if (ext == ".tif" || ext == ".tiff") format = "tiff";
-    else throw InputError(file, 0, "", "unknown image extension '" + ext + "' (use .png, .exr or .tif)");
-    if (options.pngCompression < 0 || options.pngCompression > 9)
-        throw InputError(file, 0, "png-compression", "must be 0..9, got " + std::to_string(options.pngCompression));
+    if (ext == ".png") return "png";
+    if (ext == ".exr") return "openexr";
+    if (ext == ".tif" || ext == ".tiff") return "tiff";
+    throw InputError(path.string(), 0, "", "unknown image extension '" + ext + "' (use .png, .exr or .tif)");
+}
+
+// The file's bytes, encoded in memory. Encoding to memory and writing the bytes through the
+// one checked writer (common/atomic_file) is what makes a full disk an error: OpenImageIO's
+// own file writes do not report ENOSPC reliably (a truncated PNG was written "successfully").
+std::vector<std::uint8_t> encode(const Image& image, const std::string& format, const ImageWriteOptions& options) {
     const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
     if (image.width == 0 || image.height == 0 || image.bytes.size() != pixels * image.bytesPerPixel())
-        throw std::invalid_argument("writeImage: image size does not match its bytes");
-
-    ensureWritableDirectory(path.parent_path());
+        throw std::invalid_argument("encodeImage: image size does not match its bytes");
     const int channels = options.alpha ? 4 : 3;
     const bool sixteen = image.format == PixelFormat::Rgba16;
     const bool exr = format == "openexr";
@@ -50,17 +53,16 @@ void writeImage(const Image& image, const fs::path& path, const ImageWriteOption
     if (options.alpha) spec.alpha_channel = 3;
     // Our alpha is straight (not premultiplied): tell OIIO not to un-premultiply.
     spec.attribute("oiio:UnassociatedAlpha", 1);
-    spec.attribute("png:compressionLevel", options.pngCompression);
-    if (format == "tiff") spec.attribute("compression", "zip");
-    if (exr) spec.attribute("compression", "zip");
+    spec.attribute("png:compressionLevel", std::clamp(options.pngCompression, 0, 9));
+    if (format == "tiff" || exr) spec.attribute("compression", "zip");
 
-    TemporaryFile temporary(path);
-    auto output = OIIO::ImageOutput::create(format);
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    const std::string name = "memory." + std::string(format == "png" ? "png" : exr ? "exr" : "tif");
+    auto output = OIIO::ImageOutput::create(name, &memory);
     if (!output) throw EnvironmentError("OpenImageIO cannot write " + format + ": " + OIIO::geterror());
-    if (!output->open(temporary.path().string(), spec))
-        throw InputError(file, 0, "", "cannot write image: " + output->geterror());
-    bool ok = false;
-    if (exr) {
+    bool ok = output->open(name, spec);
+    if (ok && exr) {
         // EXR holds linear light: undo the sRGB encoding of the colour channels.
         std::vector<float> linear(pixels * static_cast<std::size_t>(channels));
         for (std::size_t p = 0; p < pixels; ++p)
@@ -70,36 +72,31 @@ void writeImage(const Image& image, const fs::path& path, const ImageWriteOption
                 linear[p * channels + c] = c < 3 ? srgbToLinear(v) : v;
             }
         ok = output->write_image(OIIO::TypeDesc::FLOAT, linear.data());
-    } else {
+    } else if (ok) {
         // Channels 0..channels-1 of each RGBA pixel (alpha skipped by the stride when dropped).
         ok = output->write_image(sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8, image.bytes.data(),
                                  static_cast<OIIO::stride_t>(image.bytesPerPixel()));
     }
-    if (!ok) throw InputError(file, 0, "", "cannot write image: " + output->geterror());
-    if (!output->close()) throw InputError(file, 0, "", "cannot write image: " + output->geterror());
-    temporary.commit();
+    if (!ok || !output->close()) throw EnvironmentError(format + " encoding failed: " + output->geterror());
+    return std::vector<std::uint8_t>(bytes.begin(), bytes.end());
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encodeImage(const Image& image, const fs::path& fileName, const ImageWriteOptions& options) {
+    const std::string format = formatOf(fileName);
+    if (options.pngCompression < 0 || options.pngCompression > 9)
+        throw InputError(fileName.string(), 0, "png-compression", "must be 0..9, got " + std::to_string(options.pngCompression));
+    return encode(image, format, options);
+}
+
+void writeImage(const Image& image, const fs::path& path, const ImageWriteOptions& options) {
+    const std::vector<std::uint8_t> bytes = encodeImage(image, path, options);
+    writeFileAtomic(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 std::vector<std::uint8_t> encodePng(const Image& image, const ImageWriteOptions& options) {
-    const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
-    if (image.width == 0 || image.height == 0 || image.bytes.size() != pixels * image.bytesPerPixel())
-        throw std::invalid_argument("encodePng: image size does not match its bytes");
-    const int channels = options.alpha ? 4 : 3;
-    const bool sixteen = image.format == PixelFormat::Rgba16;
-    OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), channels,
-                         sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
-    if (options.alpha) spec.alpha_channel = 3;
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    spec.attribute("png:compressionLevel", std::clamp(options.pngCompression, 0, 9));
-    std::vector<unsigned char> bytes;
-    OIIO::Filesystem::IOVecOutput memory(bytes);
-    auto output = OIIO::ImageOutput::create("memory.png", &memory);
-    if (!output || !output->open("memory.png", spec) ||
-        !output->write_image(sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8, image.bytes.data(),
-                             static_cast<OIIO::stride_t>(image.bytesPerPixel())) ||
-        !output->close())
-        throw EnvironmentError("PNG encoding failed: " + (output ? output->geterror() : OIIO::geterror()));
-    return std::vector<std::uint8_t>(bytes.begin(), bytes.end());
+    return encode(image, "png", options);
 }
 
 Image readImage(const fs::path& path) {

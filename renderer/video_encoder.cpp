@@ -1,6 +1,7 @@
 #include "renderer/video_encoder.hpp"
 
 #include "common/atomic_file.hpp"
+#include "common/cleanup.hpp"
 #include "common/error.hpp"
 
 #include <atomic>
@@ -123,9 +124,10 @@ VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t h
                          std::to_string(width) + "x" + std::to_string(height) +
                              ": MP4 output (H.264, yuv420p) needs an even width and height; choose an even --size");
     if (options.crf < 0 || options.crf > 51) throw InputError(file, 0, "crf", "must be 0..51");
-    ensureWritableDirectory(output_.parent_path());
-    temporary_ = temporaryPathFor(output_);
-    stderrLog_ = logPath();
+    checkOutputWritable(output_);
+    // ffmpeg overwrites this (-y); creating it here registers it for removal on a signal.
+    temporary_ = std::make_unique<TemporaryFile>(output_);
+    stderrLog_ = std::make_unique<TemporaryFile>(logPath());
 
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) throw EnvironmentError(std::string("pipe: ") + std::strerror(errno));
@@ -141,7 +143,7 @@ VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t h
         "-c:v", "libx264", "-preset", options.preset, "-crf", std::to_string(options.crf),
         "-pix_fmt", "yuv420p", "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709",
         "-color_range", "tv", "-fps_mode", "cfr", "-r", rate, "-movflags", "+faststart",
-        "-f", "mp4", temporary_.string()};
+        "-f", "mp4", temporary_->path().string()};
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -150,15 +152,25 @@ VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t h
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, stderrLog_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    posix_spawn_file_actions_adddup2(&actions, stderrLog_->descriptor(), STDERR_FILENO);
+    posix_spawnattr_t attributes;
+    initChildSpawnAttributes(&attributes);
     pid_t pid = -1;
-    const int rc = posix_spawnp(&pid, options.ffmpeg.c_str(), &actions, nullptr, argv.data(), environ);
+    int rc = 0;
+    {
+        // Started and registered in one step: a signal either finds it registered (and ends it)
+        // or comes after this program is gone.
+        CleanupLock lock;
+        rc = posix_spawnp(&pid, options.ffmpeg.c_str(), &actions, &attributes, argv.data(), environ);
+        if (rc == 0) lock.addChild(pid);
+    }
+    posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     ::close(fds[0]);
     if (rc != 0) {
         ::close(fds[1]);
-        std::error_code ec;
-        fs::remove(stderrLog_, ec);
+        temporary_.reset();
+        stderrLog_.reset();
         if (rc == ENOENT)
             throw EnvironmentError("'" + options.ffmpeg + "' not found: MP4 output needs ffmpeg with libx264 " +
                                    "(Debian/Ubuntu: apt install ffmpeg); or write PNG frames instead");
@@ -183,14 +195,11 @@ void VideoEncoder::abandon() noexcept {
     }
     if (child_ > 0) {
         ::kill(child_, SIGTERM);
-        int status = 0;
-        while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {
-        }
+        waitForChild(child_);
         child_ = -1;
     }
-    std::error_code ec;
-    if (!temporary_.empty()) fs::remove(temporary_, ec);
-    if (!stderrLog_.empty()) fs::remove(stderrLog_, ec);
+    temporary_.reset();  // removes the temporary files
+    stderrLog_.reset();
 }
 
 void VideoEncoder::fail(const std::string& what) {
@@ -200,12 +209,10 @@ void VideoEncoder::fail(const std::string& what) {
         pipe_ = -1;
     }
     if (child_ > 0) {
-        int status = 0;
-        while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {
-        }
+        waitForChild(child_);
         child_ = -1;
     }
-    const std::string log = tailOf(stderrLog_);
+    const std::string log = stderrLog_ ? tailOf(stderrLog_->path()) : std::string();
     abandon();
     finished_ = true;
     throw EnvironmentError("ffmpeg failed writing " + output_.string() + ": " + what +
@@ -226,16 +233,17 @@ void VideoEncoder::finish() {
     if (frames_ == 0) fail("no frames were written");
     ::close(pipe_);
     pipe_ = -1;
-    int status = 0;
-    while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {
-    }
+    const int status = waitForChild(child_);
     child_ = -1;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        fail(WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status)) : std::string("killed by a signal"));
-    std::error_code ec;
-    fs::remove(stderrLog_, ec);
+    if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        fail(status != -1 && WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
+                                               : std::string("killed by a signal"));
+    // ffmpeg 5 exits 0 after "Error writing trailer of ...: No space left on device" (a
+    // truncated file). It runs with -loglevel error, so anything it said is an error.
+    if (!tailOf(stderrLog_->path()).empty()) fail("it reported an error");
+    stderrLog_.reset();
     finished_ = true;
-    commitAtomic(temporary_, output_);
+    temporary_->commit();
 }
 
 }  // namespace signstim::render

@@ -3,12 +3,14 @@
 // +faststart. Raw RGBA frames are piped to an `ffmpeg` child process (posix_spawn, no shell);
 // ffmpeg writes a temporary file beside the target that is renamed only when it succeeded,
 // so a failure never leaves a half-written .mp4.
+#include "common/atomic_file.hpp"
 #include "renderer/image.hpp"
 
 #include <sys/types.h>
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -60,7 +62,10 @@ private:
     void abandon() noexcept;
     [[noreturn]] void fail(const std::string& what);
 
-    std::filesystem::path output_, temporary_, stderrLog_;
+    std::filesystem::path output_;
+    // The MP4 being written (ffmpeg's output) and ffmpeg's stderr; both removed unless the
+    // video is committed.
+    std::unique_ptr<TemporaryFile> temporary_, stderrLog_;
     std::uint32_t width_ = 0, height_ = 0;
     PixelFormat format_ = PixelFormat::Rgba8;
     pid_t child_ = -1;

@@ -157,8 +157,9 @@ TEST(RenderGltfCli, UnwritableOutputIsRefusedBeforeRendering) {
     std::ofstream(dir / "plain-file") << "x";
     const fs::path out = dir / "plain-file" / "a.png";
     const Result r = runSignstim("render-gltf " + q(writeArm(dir)) + " --out " + q(out));
-    EXPECT_EQ(r.status, 2) << r.output;
-    EXPECT_NE(r.output.find("plain-file"), std::string::npos) << r.output;
+    // A write the system refuses is exit 3 with its reason (docs/errors.md).
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find("plain-file/a.png: cannot write: Not a directory"), std::string::npos) << r.output;
 }
 
 TEST(RenderGltfCli, UnknownAnimationListsTheAvailableOnes) {

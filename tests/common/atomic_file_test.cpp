@@ -63,13 +63,45 @@ TEST(AtomicFile, UnwritableDirectoryNamesThePath) {
     std::ofstream(blocker) << "x";
     try {
         writeFileAtomic(blocker / "out.txt", "data");
-        FAIL() << "expected InputError";
-    } catch (const InputError& e) {
+        FAIL() << "expected IoError";
+    } catch (const IoError& e) {  // a failed write: exit 3, naming the path and the reason
         EXPECT_NE(std::string(e.what()).find("not-a-dir"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("Not a directory"), std::string::npos) << e.what();
     }
 }
 
 TEST(InputErrorMessage, NamesFileLineAndField) {
     InputError e("scenes/verbs.json", 12, "verbs[3].hands", "must be 1 or 2");
     EXPECT_STREQ(e.what(), "scenes/verbs.json:12: field 'verbs[3].hands': must be 1 or 2");
+}
+
+TEST(AtomicFile, ProbeNamesTheTargetAndTheSystemReason) {
+    try {
+        checkOutputWritable("/proc/signstim-probe/x.mp4");
+        FAIL() << "expected IoError";
+    } catch (const IoError& e) {
+        const std::string text = e.what();
+        EXPECT_EQ(text.rfind("/proc/signstim-probe/x.mp4: cannot write: ", 0), 0u) << text;
+        EXPECT_EQ(text.find("Success"), std::string::npos) << text;
+    }
+}
+
+TEST(AtomicFile, TemporaryFolderReplacesAnEarlierFolderWhole) {
+    const fs::path dir = freshDir("folder");
+    fs::create_directories(dir / "out");
+    std::ofstream(dir / "out" / "old.txt") << "old";
+    {
+        TemporaryFolder folder(dir / "out");
+        std::ofstream(folder.path() / "new.txt") << "new";
+        folder.commit();
+    }
+    EXPECT_FALSE(fs::exists(dir / "out" / "old.txt"));
+    EXPECT_EQ(readAll(dir / "out" / "new.txt"), "new");
+    EXPECT_EQ(fileCount(dir), 1u);  // no temporary left beside it
+    {
+        TemporaryFolder abandoned(dir / "out");
+        writeNewFile(abandoned.path() / "x.txt", "partial");
+    }
+    EXPECT_EQ(readAll(dir / "out" / "new.txt"), "new");
+    EXPECT_EQ(fileCount(dir), 1u);
 }

@@ -124,10 +124,11 @@ TEST(ImageIo, WritesExrAndTiff) {
     EXPECT_EQ(countTemporaries(dir), 0u);
 }
 
-TEST(ImageIo, UnwritableLocationIsAnInputErrorAndLeavesNothing) {
+TEST(ImageIo, UnwritableLocationIsAnIoErrorAndLeavesNothing) {
     const fs::path dir = testDir();
     std::ofstream(dir / "file") << "x";
-    EXPECT_THROW(writeImage(pattern(4, 4, PixelFormat::Rgba8), dir / "file" / "x.png"), InputError);
+    // The system refused the write (exit 3); an unknown extension is the caller's mistake.
+    EXPECT_THROW(writeImage(pattern(4, 4, PixelFormat::Rgba8), dir / "file" / "x.png"), IoError);
     EXPECT_THROW(writeImage(pattern(4, 4, PixelFormat::Rgba8), dir / "x.bmpx"), InputError);
     EXPECT_EQ(countTemporaries(dir), 0u);
 }
@@ -256,5 +257,83 @@ TEST(FrameSink, VideoErrorSurfacesOnPush) {
     auto sink = makeFrameSink(dir / "odd.mp4");
     EXPECT_THROW(sink->push(pattern(33, 32, PixelFormat::Rgba8)), InputError);
     sink.reset();
+    EXPECT_TRUE(fs::is_empty(dir));
+}
+
+// A frame folder is written as a unit (docs/errors.md): a shorter re-render replaces the
+// earlier one whole, so no stale frames of the longer render remain.
+TEST(FrameSink, ShorterRerenderLeavesNoStaleFrames) {
+    const fs::path dir = testDir() / "frames";
+    auto first = makeFrameSink(dir);
+    for (int f = 0; f < 6; ++f) first->push(pattern(20, 10, PixelFormat::Rgba8, f));
+    first->finish();
+    auto second = makeFrameSink(dir);
+    for (int f = 0; f < 3; ++f) second->push(pattern(20, 10, PixelFormat::Rgba8, 10 + f));
+    EXPECT_TRUE(fs::exists(dir / "frame_00006.png"));  // the earlier render stays until finish()
+    second->finish();
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
+    EXPECT_EQ(files, 3u);
+    EXPECT_EQ(readImage(dir / "frame_00003.png").bytes, pattern(20, 10, PixelFormat::Rgba8, 12).bytes);
+    EXPECT_EQ(countTemporaries(dir.parent_path()), 0u);
+}
+
+TEST(FrameSink, AbandonedFolderRenderKeepsTheEarlierOneIntact) {
+    const fs::path dir = testDir() / "frames";
+    auto first = makeFrameSink(dir);
+    for (int f = 0; f < 4; ++f) first->push(pattern(20, 10, PixelFormat::Rgba8, f));
+    first->finish();
+    {
+        auto second = makeFrameSink(dir);
+        second->push(pattern(20, 10, PixelFormat::Rgba8, 9));
+    }  // destroyed without finish(), as on an error
+    EXPECT_EQ(readImage(dir / "frame_00004.png").bytes, pattern(20, 10, PixelFormat::Rgba8, 3).bytes);
+    EXPECT_EQ(readImage(dir / "frame_00001.png").bytes, pattern(20, 10, PixelFormat::Rgba8, 0).bytes);
+    EXPECT_EQ(countTemporaries(dir.parent_path()), 0u);
+}
+
+TEST(FrameSink, FolderHoldingOtherFilesIsRefusedBeforeRendering) {
+    const fs::path dir = testDir() / "mine";
+    fs::create_directories(dir);
+    std::ofstream(dir / "notes.txt") << "keep me";
+    try {
+        makeFrameSink(dir);
+        ADD_FAILURE() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_FALSE(e.isCommandLine());  // exit 2, naming the folder
+        EXPECT_NE(std::string(e.what()).find("notes.txt"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("new or empty folder"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(fs::exists(dir / "notes.txt"));
+    EXPECT_EQ(countTemporaries(dir.parent_path()), 0u);
+}
+
+TEST(FrameSink, UnknownExtensionIsACommandLineErrorAndCreatesNothing) {
+    const fs::path dir = testDir();
+    for (const char* name : {"a.jpg", "b.gif", "c.mov"}) {
+        try {
+            makeFrameSink(dir / name);
+            ADD_FAILURE() << name;
+        } catch (const InputError& e) {
+            EXPECT_TRUE(e.isCommandLine()) << e.what();
+            EXPECT_EQ(e.field(), "--out");
+            EXPECT_NE(std::string(e.what()).find(".mp4"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_TRUE(fs::is_empty(dir));
+    EXPECT_EQ(outputKind("clip.MP4"), OutputKind::Video);
+    EXPECT_EQ(outputKind("still.TIFF"), OutputKind::Image);
+    EXPECT_EQ(outputKind("frames"), OutputKind::Folder);
+    EXPECT_EQ(outputKind("out/"), OutputKind::Folder);
+}
+
+TEST(Video, FfmpegTemporariesAreRemovedOnAbandon) {
+    const fs::path dir = testDir();
+    {
+        VideoEncoder encoder(dir / "x.mp4", 64, 48, PixelFormat::Rgba8);
+        encoder.write(pattern(64, 48, PixelFormat::Rgba8));
+        std::size_t temporaries = countTemporaries(dir);
+        EXPECT_EQ(temporaries, 1u);  // ffmpeg's output, registered for removal on a signal
+    }
     EXPECT_TRUE(fs::is_empty(dir));
 }
