@@ -1,0 +1,131 @@
+// The lexicon (docs/lexicon.md): body locations, touch points placed by the hand model, and
+// every kind of mistake named at its file, line and field.
+#include "stimuli/lexicon.hpp"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <string>
+
+namespace signstim::stimuli {
+namespace {
+
+const hand::HandModel& model() {
+    static const hand::HandModel m = hand::buildHandModel();
+    return m;
+}
+
+const HandshapeLibrary& shapes() {
+    static const HandshapeLibrary library =
+        loadHandshapes(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/handshapes.json", model());
+    return library;
+}
+
+// A lexicon with one sign whose right-hand keyframes are `keys` (JSON array text).
+std::string lexiconText(const std::string& keys, const std::string& extraSignFields = "") {
+    return "{\n"
+           "  \"format\": \"signstim-lexicon\",\n"
+           "  \"version\": 1,\n"
+           "  \"locations\": {\n"
+           "    \"chin\": [0, 255, 95],\n"
+           "    \"chest\": [0, 0, 110]\n"
+           "  },\n"
+           "  \"signs\": [\n"
+           "    {\"gloss\": \"THANK-YOU\", \"hands\": [\"right\"]," + extraSignFields + "\n"
+           "     \"keyframes\": {\"right\": " + keys + "}}\n"
+           "  ]\n"
+           "}\n";
+}
+
+const std::string kGoodKeys =
+    "[\n"
+    "      {\"time\": 0, \"at\": \"chin\", \"touch\": \"fingertips\", \"fingers\": [0, 1, 0], \"palm\": [0, 0, -1], \"handshape\": \"B\"},\n"
+    "      {\"time\": 0.4, \"at\": \"chin\", \"offset\": [0, -80, 200], \"touch\": \"fingertips\", \"fingers\": [0, 0.5, 1], \"palm\": [0, 1, 0], \"handshape\": \"B\"}\n"
+    "     ]";
+
+Lexicon parse(const std::string& text) { return parseLexicon(parseJsonText(text, "lexicon.json"), shapes(), model()); }
+
+InputError errorOf(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const InputError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for:\n" << text;
+    return InputError("none");
+}
+
+TEST(Lexicon, ATouchPointLandsOnItsLocation) {
+    const Lexicon lexicon = parse(lexiconText(kGoodKeys));
+    const LexiconSign& sign = *lexicon.find("THANK-YOU");
+    ASSERT_EQ(sign.keyframes.size(), 1u);
+    const VerbKeyframe& first = sign.keyframes[0][0];
+    const glm::dvec3 tip = *touchPointMm(model(), shapes().at("B").controls, hand::Side::Right, "fingertips");
+    // Fingers up, so the palm's origin is a hand's length below the chin.
+    const glm::dvec3 origin = first.pose.positionMm;
+    EXPECT_NEAR(origin.y, 255.0 - tip.z, 1.0);
+    EXPECT_NEAR(glm::length(palmOriginForTouch(glm::dvec3(0, 255, 95), first.pose.orientation, tip) - origin), 0.0, 1e-9);
+    const VerbKeyframe& second = sign.keyframes[0][1];
+    // The fingertips moved out from the chin by the offset (forward and down).
+    const glm::dvec3 tipThen = second.pose.positionMm + second.pose.orientation * glm::dvec3(tip.x, -tip.y, tip.z);
+    EXPECT_NEAR(glm::length(tipThen - glm::dvec3(0, 175, 295)), 0.0, 1e-6);
+    EXPECT_DOUBLE_EQ(sign.durationSeconds(), 0.4);
+}
+
+// The handedness of the signing-space orientation convention: a right hand held up with the
+// palm toward the viewer has its thumb on the signer's left (-x); a left hand, on the right.
+TEST(Lexicon, TheThumbIsOnTheMidlineSideOfAnUprightHandFacingTheViewer) {
+    const std::string keys = "[{\"time\": 0, \"position\": [0, 0, 300], \"touch\": \"thumb-tip\", \"fingers\": [0, 1, 0], "
+                             "\"palm\": [0, 0, 1], \"handshape\": \"5\"},"
+                             " {\"time\": 0.2, \"position\": [0, 0, 300], \"fingers\": [0, 1, 0], \"palm\": [0, 0, 1], "
+                             "\"handshape\": \"5\"}]";
+    const Lexicon lexicon = parse(lexiconText(keys));
+    const LexiconSign& sign = lexicon.signs.front();
+    // Keyframe 0 puts the thumb tip at x = 0, so the palm's origin lies to the signer's right of it.
+    EXPECT_GT(sign.keyframes[0][0].pose.positionMm.x, 30.0);
+    // The left hand mirrored: its thumb is on the signer's right.
+    const glm::dvec3 leftThumb = *touchPointMm(model(), shapes().at("5").controls, hand::Side::Left, "thumb-tip");
+    const glm::dvec3 leftOrigin = palmOriginForTouch(glm::dvec3(0, 0, 300), sign.keyframes[0][1].pose.orientation, leftThumb);
+    EXPECT_LT(leftOrigin.x, -30.0);
+}
+
+TEST(Lexicon, EachMistakeNamesFileLineAndField) {
+    struct Case {
+        std::string text;
+        int line;
+        const char* field;
+        const char* says;
+    };
+    std::string unknownShape = kGoodKeys;
+    unknownShape.replace(unknownShape.find("\"B\""), 3, "\"BB\"");
+    std::string unknownLocation = kGoodKeys;
+    unknownLocation.replace(unknownLocation.find("\"chin\""), 6, "\"nose\"");
+    std::string unknownTouch = kGoodKeys;
+    unknownTouch.replace(unknownTouch.find("\"fingertips\""), 12, "\"elbow\"");
+    std::string bothPlaces = kGoodKeys;
+    bothPlaces.replace(bothPlaces.find("\"at\": \"chin\""), 12, "\"at\": \"chin\", \"position\": [0, 0, 0]");
+    std::string farAway = kGoodKeys;
+    farAway.replace(farAway.find("[0, -80, 200]"), 13, "[0, -80, 2000]");
+    const Case cases[] = {
+        {lexiconText(unknownShape), 11, "/signs/0/keyframes/right/0/handshape", "unknown handshape 'BB'"},
+        {lexiconText(unknownLocation), 11, "/signs/0/keyframes/right/0/at", "known: chest, chin"},
+        {lexiconText(unknownTouch), 11, "/signs/0/keyframes/right/0/touch", "unknown touch point 'elbow'"},
+        {lexiconText(bothPlaces), 11, "/signs/0/keyframes/right/0", "either"},
+        {lexiconText(farAway), 12, "/signs/0/keyframes/right/1/offset", "at most 400 mm"},
+        {lexiconText(kGoodKeys, " \"passes\": 0,"), 9, "/signs/0/passes", "1 to 8"},
+    };
+    for (const Case& c : cases) {
+        const InputError e = errorOf(c.text);
+        EXPECT_EQ(e.file(), "lexicon.json");
+        EXPECT_EQ(e.line(), c.line) << e.what();
+        EXPECT_EQ(e.field(), c.field) << e.what();
+        EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << e.what();
+    }
+    std::string wrongFormat = lexiconText(kGoodKeys);
+    wrongFormat.replace(wrongFormat.find("signstim-lexicon"), 16, "signstim-verbs");
+    EXPECT_EQ(errorOf(wrongFormat).line(), 2);
+}
+
+}  // namespace
+}  // namespace signstim::stimuli
