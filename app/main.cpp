@@ -1,4 +1,5 @@
 // The `signstim` command: parses arguments, wires stimuli -> renderer, reports progress.
+#include "app/cli_rules.hpp"
 #include "app/commands.hpp"
 #include "common/error.hpp"
 
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
     app::registerHandCommands(commands);
     app::registerAvatarCommands(commands);
     app::registerVerbCommands(commands);
+    app::requirePlainNumbers(root);
 
     try {
         root.parse(argc, argv);
