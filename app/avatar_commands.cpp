@@ -49,6 +49,17 @@ render::Scene loadAvatar(const AvatarSource& o) {
     return loadSignerAvatar(path, mappingOf(o));
 }
 
+// The handshape `name` given with `flag` (the library's own message names --shape, the flag
+// of `hand pose`).
+const stimuli::Handshape& shapeFor(const stimuli::HandshapeLibrary& library, const std::string& name,
+                                   const std::string& flag) {
+    try {
+        return library.at(name);
+    } catch (const InputError& e) {
+        throw commandLineError(flag, e.detail());
+    }
+}
+
 // An extra hand rotation given as a rotation vector in degrees in the signing-space frame.
 glm::quat signingSpaceRotation(const glm::vec3& rotationVectorDeg) {
     const float angle = glm::length(rotationVectorDeg);
@@ -124,6 +135,7 @@ void registerAvatarCommands(Commands& commands) {
     shapes->callback([g] {
         const GalleryView view = parseGalleryView(g->view);
         checkImageOutput(g->gallery, "--gallery");
+        requireSampleCount(g->msaa, "--msaa");
         const render::Scene scene = loadAvatar(g->source);
         const SignerRig rig(scene, mappingOf(g->source));
         const stimuli::HandshapeLibrary library =
@@ -164,19 +176,20 @@ void registerAvatarCommands(Commands& commands) {
         const ImageSize size = parseImageSize(p->size, "--size", {.minimum = 16, .maximum = 8192});
         checkImageOutput(p->out, "--out");
         const std::uint32_t width = size.width, height = size.height;
+        requireSampleCount(p->msaa, "--msaa");
         const render::Scene scene = loadAvatar(p->source);
         const SignerRig rig(scene, mappingOf(p->source));
         const stimuli::HandshapeLibrary library =
             stimuli::loadHandshapes(stimuli::handshapesFile(p->shapesFile, p->source.scenesDir), rig.handModel());
         SignerPosture posture;
-        posture.rightHand = library.at(p->right).controls;
+        posture.rightHand = shapeFor(library, p->right, "--right").controls;
         hand::ArmTarget right = rig.presentingTarget(hand::Side::Right);
         if (!p->rightWrist.empty()) right.wristMm = bodyFromSigningSpace(parseTriple(p->rightWrist, "--right-wrist"));
         if (!p->rightRotation.empty())
             right.handRotation = signingSpaceRotation(parseTriple(p->rightRotation, "--right-rotation")) * right.handRotation;
         posture.rightWrist = right;
         if (!p->left.empty() || !p->leftWrist.empty()) {
-            if (!p->left.empty()) posture.leftHand = library.at(p->left).controls;
+            if (!p->left.empty()) posture.leftHand = shapeFor(library, p->left, "--left").controls;
             hand::ArmTarget left = rig.presentingTarget(hand::Side::Left);
             if (!p->leftWrist.empty()) left.wristMm = bodyFromSigningSpace(parseTriple(p->leftWrist, "--left-wrist"));
             if (!p->leftRotation.empty())

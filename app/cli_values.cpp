@@ -127,6 +127,14 @@ glm::vec4 parseColour(const std::string& text, const std::string& flag) {
     return glm::vec4(srgbToLinear(srgb.r), srgbToLinear(srgb.g), srgbToLinear(srgb.b), srgb.a);
 }
 
+std::uint32_t requireSampleCount(std::uint32_t count, const std::string& flag) {
+    // VkSampleCountFlagBits: powers of two up to 64.
+    if (count < 1 || count > 64 || (count & (count - 1)) != 0)
+        throw commandLineError(flag, "expected 1, 2, 4, 8, 16, 32 or 64 samples (lavapipe has 1 and 4), got " +
+                                         std::to_string(count));
+    return count;
+}
+
 double requireInRange(double value, double minimum, double maximum, const std::string& flag, const std::string& unit) {
     if (!(value >= minimum && value <= maximum)) {
         std::ostringstream range, given;

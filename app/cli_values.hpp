@@ -47,6 +47,10 @@ glm::vec3 parseTriple(const std::string& text, const std::string& flag);
 // -> linear RGBA (alpha as given, 1 when absent; transparent is 0,0,0,0).
 glm::vec4 parseColour(const std::string& text, const std::string& flag);
 
+// `count` when it is a Vulkan sample count (1, 2, 4, 8, 16, 32 or 64); whether the chosen device
+// has it is the renderer's check (lavapipe: 1 and 4), made before anything is written.
+std::uint32_t requireSampleCount(std::uint32_t count, const std::string& flag);
+
 // value itself when minimum <= value <= maximum (NaN is refused); `unit` ends the message
 // ("mm" -> "expected 100 to 300 mm, got 350").
 double requireInRange(double value, double minimum, double maximum, const std::string& flag,

@@ -21,6 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -78,6 +79,7 @@ void runDemo(const DemoOptions& o) {
     stimuli::checkArcPosition(o.object, "<command line>", "--object");
     const render::FrameRate frameRate = render::parseFrameRate(o.fps);
     const double fps = frameRate.value();
+    requireSampleCount(o.msaa, "--msaa");
 
     // Inputs first, so that a data problem is reported before anything is rendered or written.
     const fs::path scenes = stimuli::resolveScenesDir(o.scenesDir);
@@ -93,7 +95,14 @@ void runDemo(const DemoOptions& o) {
     if (o.verbs.empty())
         for (const auto& v : verbs.verbs) chosen.push_back(&v);
     else
-        for (const auto& name : o.verbs) chosen.push_back(&verbs.get(name, "<command line>", 0, "--verbs"));
+        for (const auto& name : o.verbs) {
+            const stimuli::VerbDefinition* verb = &verbs.get(name, "<command line>", 0, "--verbs");
+            // Each verb once: a repeat would render the same files twice and list them twice
+            // in the manifest.
+            if (std::find(chosen.begin(), chosen.end(), verb) != chosen.end())
+                throw commandLineError("--verbs", verb->name + " is listed twice");
+            chosen.push_back(verb);
+        }
 
     // Every clip is synthesized before rendering starts (missing animator files fail fast).
     std::vector<std::vector<VerbClip>> clips;
@@ -104,6 +113,11 @@ void runDemo(const DemoOptions& o) {
                                   stimuli::synthesizeVerb(sources, verb->name, version, o.subject, o.object));
         clips.push_back(std::move(versions));
     }
+
+    // The verbs' renderer first: a device that refuses --msaa, the panel size or --device stops
+    // the demo before anything is created on disk.
+    const render::RendererOptions options = signerRendererOptions(2 * panelWidth, 2 * panelHeight, o.msaa, o.device);
+    render::Renderer renderer(options);
 
     const fs::path root(o.out);
     ensureWritableDirectory(root);
@@ -126,8 +140,6 @@ void runDemo(const DemoOptions& o) {
     }
 
     // 2. Each verb: the four versions side by side, in sync (2x2 panels A-D).
-    const render::RendererOptions options = signerRendererOptions(2 * panelWidth, 2 * panelHeight, o.msaa, o.device);
-    render::Renderer renderer(options);
     const int handle = renderer.addScene(avatar);
     ClipRenderOptions clipOptions;
     clipOptions.framesPerSecond = fps;

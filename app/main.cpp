@@ -1,4 +1,5 @@
 // The `signstim` command: parses arguments, wires stimuli -> renderer, reports progress.
+#include "app/cli_rules.hpp"
 #include "app/commands.hpp"
 #include "common/cleanup.hpp"
 #include "common/error.hpp"
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
     app::registerHandCommands(commands);
     app::registerAvatarCommands(commands);
     app::registerVerbCommands(commands);
+    app::requirePlainNumbers(root);
 
     try {
         root.parse(argc, argv);

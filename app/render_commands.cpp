@@ -26,7 +26,9 @@ namespace fs = std::filesystem;
 
 struct RenderGltfSettings {
     std::string file, out, size = "640x480", fps = "30", animation, camera, background, device;
-    int frames = 0;  // 0: one per frame period over the animation, or 1 without animation
+    std::vector<std::string> allowedDirectories;
+    std::int64_t frames = 0;  // when framesGiven; else one per frame period over the animation
+    bool framesGiven = false;
     std::uint32_t msaa = 4;
     int pngCompression = 1;
     int bitDepth = 8;
@@ -71,13 +73,20 @@ int chooseAnimation(const render::Scene& scene, const std::string& request, cons
                          (names.empty() ? " (it has none)" : " (it has: " + names + ")"));
 }
 
+// A clip longer than this is refused: frame counts stay far from any integer limit, and an
+// hour of frames is more than any stimulus; a key at 1e9 s is a broken file, not a request.
+constexpr double kLongestClipSeconds = 3600.0;
+
+// Frames of an hour at `fps`, first and last included.
+std::int64_t mostFrames(double fps) { return static_cast<std::int64_t>(std::ceil(kLongestClipSeconds * fps - 1e-4)) + 1; }
+
 void renderGltf(const RenderGltfSettings& s) {
     using Clock = std::chrono::steady_clock;
     render::RendererOptions options;
     const ImageSize size = parseImageSize(s.size, "--size");
     options.width = size.width;
     options.height = size.height;
-    options.msaa = s.msaa;
+    options.msaa = requireSampleCount(s.msaa, "--msaa");
     options.device = s.device;
     if (s.bitDepth != 8 && s.bitDepth != 16) throw commandLineError("--bit-depth", "must be 8 or 16");
     options.format = s.bitDepth == 16 ? render::PixelFormat::Rgba16 : render::PixelFormat::Rgba8;
@@ -88,36 +97,63 @@ void renderGltf(const RenderGltfSettings& s) {
     const fs::path out = s.out;
     const render::OutputKind kind = render::outputKind(out);
 
-    const render::Scene scene = render::loadGltf(s.file);
+    const double fps = video.frameRate.value();
+    if (s.framesGiven && (s.frames < 1 || s.frames > mostFrames(fps)))
+        throw commandLineError("--frames", "must be 1 to " + std::to_string(mostFrames(fps)) + " (one hour at " +
+                                               video.frameRate.text() + " fps), got " + std::to_string(s.frames));
+
+    render::GltfLoadOptions loadOptions;
+    loadOptions.allowedDirectories.assign(s.allowedDirectories.begin(), s.allowedDirectories.end());
+    loadOptions.allowFlag = "--allow-dir";
+    const render::Scene scene = render::loadGltf(s.file, loadOptions);
     const int animation = chooseAnimation(scene, s.animation, s.file);
-    const float duration = animation >= 0 ? scene.animations[static_cast<std::size_t>(animation)].durationSeconds : 0.0f;
+    const render::Animation* clip = animation >= 0 ? &scene.animations[static_cast<std::size_t>(animation)] : nullptr;
+    const float duration = clip ? clip->durationSeconds : 0.0f;
 
     const bool singleImage = kind == render::OutputKind::Image;
-    int frames = s.frames;
-    if (frames < 0) throw commandLineError("--frames", "must be at least 1");
-    if (frames == 0)
-        frames = singleImage || duration <= 0.0f ? 1 : static_cast<int>(std::ceil(duration * video.frameRate.value() - 1e-4)) + 1;
+    std::int64_t frames = s.frames;
+    if (!s.framesGiven && (singleImage || duration <= 0.0f)) {
+        frames = 1;
+    } else if (!s.framesGiven) {
+        // In double, before any integer conversion: a key at 1e9 s is 3e10 frames at 30 fps.
+        const double needed = std::ceil(static_cast<double>(duration) * fps - 1e-4) + 1.0;
+        if (needed > static_cast<double>(mostFrames(fps))) {
+            std::ostringstream count, seconds;
+            count.precision(0);
+            count << std::fixed << needed;
+            seconds << duration;
+            throw InputError(s.file, 0, clip->durationSource,
+                             "animation '" + clip->name + "' lasts " + seconds.str() + " s: " + count.str() +
+                                 " frames at " + video.frameRate.text() +
+                                 " fps, more than one hour (" + std::to_string(mostFrames(fps)) +
+                                 " frames); refused (--frames N renders N frames spread over it)");
+        }
+        frames = static_cast<std::int64_t>(needed);
+    }
     if (singleImage && frames > 1)
-        throw InputError(out.string(), 0, "--frames", std::to_string(frames) +
-                                                          " frames need a directory or an .mp4 output, not a single image");
+        throw commandLineError("--frames", std::to_string(frames) + " frames need a directory or an .mp4 output, not " +
+                                               out.string() + " (a single image)");
     if (kind == render::OutputKind::Video && (options.width % 2 || options.height % 2))
         throw commandLineError("--size", s.size + ": MP4 (H.264, yuv420p) needs an even width and height");
     // Fail on a bad output location now, not after rendering.
     if (kind == render::OutputKind::Folder) render::checkFrameFolder(out);
     checkOutputWritable(out);
-
     // Frame i shows the animation at duration * i / (frames - 1): first and last key included.
-    auto timeOf = [&](int i) { return frames > 1 ? duration * static_cast<float>(i) / static_cast<float>(frames - 1) : 0.0f; };
-    auto poseAt = [&](int i) {
+    auto timeOf = [&](std::int64_t i) {
+        return frames > 1 ? static_cast<float>(static_cast<double>(duration) * static_cast<double>(i) /
+                                               static_cast<double>(frames - 1))
+                          : 0.0f;
+    };
+    auto poseAt = [&](std::int64_t i) {
         render::Pose pose = render::restPose(scene);
         if (animation >= 0) render::applyAnimation(scene, animation, timeOf(i), pose);
         return pose;
     };
     // One fixed camera framing the union of the posed bounds (at most 64 samples).
     render::Bounds bounds;
-    const int samples = std::min(frames, 64);
-    for (int k = 0; k < samples; ++k) {
-        const int i = samples > 1 ? k * (frames - 1) / (samples - 1) : 0;
+    const std::int64_t samples = std::min<std::int64_t>(frames, 64);
+    for (std::int64_t k = 0; k < samples; ++k) {
+        const std::int64_t i = samples > 1 ? k * (frames - 1) / (samples - 1) : 0;
         const render::Bounds b = render::computeBounds(scene, poseAt(i));
         if (!b.empty) {
             bounds.add(b.min);
@@ -127,34 +163,45 @@ void renderGltf(const RenderGltfSettings& s) {
     const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
     render::Camera camera = render::frameBounds(bounds, aspect);
     if (!s.camera.empty()) camera = parseCamera(s.camera, camera);
+    // The renderer would blame "<frame>"; name where the camera came from instead.
+    if (const std::string problem = render::cameraProblem(camera); !problem.empty()) {
+        if (!s.camera.empty()) throw commandLineError("--camera", problem);
+        throw InputError(s.file, 0, "", "the scene's bounds cannot be framed by a camera: " + problem +
+                                            " (give one with --camera)");
+    }
 
     render::ImageWriteOptions imageOptions;
     imageOptions.pngCompression = s.pngCompression;
     imageOptions.alpha = options.background.a < 1.0f;
+    // The renderer first: a device that refuses --msaa, --size or --device stops the command
+    // before anything is created on disk.
     render::Renderer renderer(options);
+    // Fail on a bad output location now, not after rendering.
+    ensureWritableDirectory(singleImage || ext == ".mp4" ? out.parent_path() : out);
     const int handle = renderer.addScene(scene);
     std::unique_ptr<render::FrameSink> sink = render::makeFrameSink(out, imageOptions, video);
 
-    auto frameAt = [&](int i) {
+    auto frameAt = [&](std::int64_t i) {
         render::Frame frame;
         frame.views.push_back(render::View{handle, poseAt(i), camera, ""});
         return frame;
     };
     const auto start = Clock::now();
     auto lastReport = start;
-    auto report = [&](int done, bool final) {
+    auto report = [&](std::int64_t done, bool final) {
         if (s.quiet) return;
         const auto now = Clock::now();
         if (!final && now - lastReport < std::chrono::milliseconds(500)) return;
         lastReport = now;
         const double seconds = std::chrono::duration<double>(now - start).count();
-        std::fprintf(stderr, "\rrender-gltf: %d/%d frames, %.1f fps", done, frames, seconds > 0 ? done / seconds : 0.0);
+        std::fprintf(stderr, "\rrender-gltf: %lld/%lld frames, %.1f fps", static_cast<long long>(done),
+                     static_cast<long long>(frames), seconds > 0 ? static_cast<double>(done) / seconds : 0.0);
         if (final) std::fprintf(stderr, "\n");
         std::fflush(stderr);
     };
     // Pipelined: keep the renderer's frames in flight busy while the sink encodes.
-    const int inFlight = static_cast<int>(std::max(1u, renderer.framesInFlight()));
-    int submitted = 0, done = 0;
+    const std::int64_t inFlight = std::max(1u, renderer.framesInFlight());
+    std::int64_t submitted = 0, done = 0;
     while (done < frames) {
         while (submitted < frames && submitted - done < inFlight) renderer.submit(frameAt(submitted++));
         render::Image image;
@@ -186,10 +233,12 @@ void registerRenderCommands(Commands& commands) {
                     "a new folder, or one holding only an earlier render's frames, which it replaces whole)")
         ->required();
     cmd->add_option("--size", settings->size, "WIDTHxHEIGHT (default 640x480; even for MP4)");
-    cmd->add_option("--frames", settings->frames,
-                    "number of frames (default: duration x fps + 1 with an animation, else 1)");
+    CLI::Option* framesOption = cmd->add_option(
+        "--frames", settings->frames,
+        "number of frames, at least 1 (default: duration x fps + 1 with an animation, else 1; at most one hour)");
     cmd->add_option("--fps", settings->fps, "frame rate: 30, 25, 30000/1001 or 29.97 (default 30)");
-    cmd->add_option("--msaa", settings->msaa, "multisampling 1 or 4 (default 4)")->check(CLI::IsMember({1, 4}));
+    cmd->add_option("--msaa", settings->msaa,
+                    "multisampling 1 or 4 (default 4; others where the device has them, see `signstim devices`)");
     cmd->add_option("--animation", settings->animation, "animation name or index (default: the first, if any)");
     cmd->add_option("--camera", settings->camera,
                     "'eye=x,y,z;target=x,y,z;up=x,y,z;fov=deg', any subset (default: frames the scene bounds "
@@ -199,8 +248,14 @@ void registerRenderCommands(Commands& commands) {
     cmd->add_option("--device", settings->device, "Vulkan device: name substring or index (see `signstim devices`)");
     cmd->add_option("--png-compression", settings->pngCompression, "zlib level 0..9 (default 1: fast)");
     cmd->add_option("--bit-depth", settings->bitDepth, "8 or 16 bits per channel (PNG)");
+    cmd->add_option("--allow-dir", settings->allowedDirectories,
+                    "a folder outside the model's own from which its images and buffers may be read "
+                    "(repeatable; by default a URI that is absolute or leads out with .. is refused)");
     cmd->add_flag("--quiet,-q", settings->quiet, "no progress on stderr");
-    cmd->callback([settings] { renderGltf(*settings); });
+    cmd->callback([settings, framesOption] {
+        settings->framesGiven = framesOption->count() > 0;
+        renderGltf(*settings);
+    });
 }
 
 }  // namespace signstim::app

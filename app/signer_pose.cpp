@@ -10,6 +10,7 @@
 #include <glm/mat3x3.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -39,8 +40,40 @@ std::string sideName(hand::Side side) { return side == hand::Side::Right ? "righ
 
 // The node of a VRM bone: through `mapping` when it names one, else the VRM name itself.
 int findBone(const render::Scene& scene, const BoneMapping& mapping, const std::string& vrm) {
-    const auto it = mapping.find(vrm);
-    return scene.findNode(it != mapping.end() ? it->second : vrm);
+    const auto it = mapping.nodes.find(vrm);
+    return scene.findNode(it != mapping.nodes.end() ? it->second : vrm);
+}
+
+// Keys a bone map may have: the VRM 1.0 humanoid bones (and VRM 0.x's thumb names), and the
+// forearm twist helpers the rig uses when present. Anything else is a typo that would
+// otherwise be ignored silently.
+bool isKnownBoneName(const std::string& name) {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> n{"hips", "spine", "chest", "upperChest", "neck", "head", "leftEye", "rightEye", "jaw"};
+        for (const char* side : {"left", "right"}) {
+            const std::string s = side;
+            for (const char* part : {"UpperLeg", "LowerLeg", "Foot", "Toes", "Shoulder", "UpperArm", "LowerArm",
+                                     "ForearmTwistMid", "ForearmTwistWrist", "Hand", "ThumbMetacarpal",
+                                     "ThumbProximal", "ThumbIntermediate", "ThumbDistal"})
+                n.push_back(s + part);
+            for (const char* finger : {"Index", "Middle", "Ring", "Little"})
+                for (const char* joint : {"Proximal", "Intermediate", "Distal"}) n.push_back(s + finger + joint);
+        }
+        return n;
+    }();
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// 1-based line of the first `"key":` in `text` (0 when not found).
+int lineOfKey(const std::string& text, const std::string& key) {
+    const std::string quoted = nlohmann::json(key).dump();
+    for (std::size_t at = text.find(quoted); at != std::string::npos; at = text.find(quoted, at + 1)) {
+        std::size_t after = at + quoted.size();
+        while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+        if (after < text.size() && text[after] == ':')
+            return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    }
+    return 0;
 }
 
 // The shortest rotation taking direction a onto direction b.
@@ -97,14 +130,23 @@ BoneMapping loadBoneMapping(const std::filesystem::path& file) {
         const int line = 1 + static_cast<int>(std::count(s.begin(), s.begin() + static_cast<long>(offset), '\n'));
         throw InputError(file.string(), line, "", std::string("not valid JSON: ") + e.what());
     }
-    const nlohmann::json& object = json.contains("bones") ? json["bones"] : json;
-    if (!object.is_object())
-        throw InputError(file.string(), 0, "bones", "expected an object {\"vrmBoneName\": \"nodeName\"}");
     BoneMapping mapping;
+    mapping.file = file.string();
+    mapping.pointer = json.is_object() && json.contains("bones") ? "/bones" : "";
+    const nlohmann::json& object = mapping.pointer.empty() ? json : json["bones"];
+    if (!object.is_object())
+        throw InputError(mapping.file, 0, mapping.pointer,
+                         (mapping.pointer.empty() ? "the top level: " : "") +
+                             std::string("expected an object {\"vrmBoneName\": \"nodeName\"}"));
     for (const auto& [vrm, node] : object.items()) {
+        const int line = lineOfKey(text.str(), vrm);
+        if (!isKnownBoneName(vrm))
+            throw InputError(mapping.file, line, mapping.pointer + "/" + vrm,
+                             "'" + vrm + "' is not a VRM humanoid bone name (e.g. leftUpperArm, rightIndexProximal)");
         if (!node.is_string())
-            throw InputError(file.string(), 0, vrm, "expected the node name as a string");
-        mapping[vrm] = node.get<std::string>();
+            throw InputError(mapping.file, line, mapping.pointer + "/" + vrm, "expected the node name as a string");
+        mapping.nodes[vrm] = node.get<std::string>();
+        mapping.lines[vrm] = line;
     }
     return mapping;
 }
@@ -181,6 +223,15 @@ render::Scene loadSignerAvatar(const std::filesystem::path& file, const BoneMapp
 SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, const hand::HandModel& handModel)
     : scene_(&scene), handModel_(handModel) {
     const auto lookup = [&](const std::string& vrm) { return findBone(scene, mapping, vrm); };
+    // An entry naming a node the avatar lacks is the bone map's mistake, not the avatar's.
+    for (const auto& [vrm, node] : mapping.nodes) {
+        if (scene.findNode(node) >= 0) continue;
+        const auto line = mapping.lines.find(vrm);
+        throw InputError(mapping.file.empty() ? scene.sourceName : mapping.file,
+                         line != mapping.lines.end() ? line->second : 0, mapping.pointer + "/" + vrm,
+                         "node '" + node + "' is not in " + scene.sourceName +
+                             " (the bone map names, for each VRM bone, a node of the avatar)");
+    }
     std::vector<std::string> missing;
     for (const std::string& name : requiredSignerBones())
         if (lookup(name) < 0) missing.push_back(name);

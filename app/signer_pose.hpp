@@ -35,10 +35,17 @@
 
 namespace signstim::app {
 
-// VRM humanoid bone name -> node name in the user's glTF.
-using BoneMapping = std::map<std::string, std::string>;
-// JSON object {"leftUpperArm": "mixamorig:LeftArm", ...} (optionally under "bones").
-// Throws InputError naming the file, line and field.
+// VRM humanoid bone name -> node name in the user's glTF, and where each entry was written, so
+// that a wrong entry is reported in the bone-map file rather than blamed on the avatar.
+struct BoneMapping {
+    std::map<std::string, std::string> nodes;  // VRM name -> node name
+    std::string file;                          // the bone-map file; empty when built in code
+    std::string pointer;                       // JSON pointer of the object: "/bones" or ""
+    std::map<std::string, int> lines;          // VRM name -> line of its entry in `file`
+};
+// JSON object {"leftUpperArm": "mixamorig:LeftArm", ...} (optionally under "bones"); every
+// key a VRM humanoid bone name (or a forearm twist helper, see requiredSignerBones). Throws
+// InputError naming the file, line and field (a JSON pointer: "/bones/leftUpperArm").
 BoneMapping loadBoneMapping(const std::filesystem::path& file);
 
 // Bones the posing needs (VRM names); eyes, shoulders and the forearm twist helpers are used
@@ -89,7 +96,8 @@ struct PoseReport {
 class SignerRig {
 public:
     // Finds every required bone (VRM names, or `mapping` VRM -> node name). Throws InputError
-    // naming the scene and listing all missing bones.
+    // naming the bone-map file, line and entry when an entry names a node the scene lacks;
+    // else naming the scene and listing all missing bones.
     explicit SignerRig(const render::Scene& scene, const BoneMapping& mapping = {},
                        const hand::HandModel& handModel = hand::buildHandModel());
 

@@ -81,18 +81,21 @@ void printSummary(const VerbPerformance& p) {
 
 // verb --out: the signer performs the verb (lead-in from rest, the verb, a hold).
 void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, const VerbPerformance& performance) {
-    const ImageSize size = parseImageSize(o.size, "--size");
+    const std::filesystem::path out(o.outPath);
+    // The output's kind is checked before anything is loaded or rendered.
+    const render::OutputKind kind = render::outputKind(out);
+    // H.264 in yuv420p needs even sides: refused here as the flag's mistake, before rendering.
+    const ImageSize size = parseImageSize(o.size, "--size", {.even = kind == render::OutputKind::Video});
     const std::uint32_t width = size.width, height = size.height;
     const render::FrameRate frameRate = render::parseFrameRate(o.fps);
-    const std::filesystem::path out(o.outPath);
-    // The output's kind and place are checked before anything is loaded or rendered.
-    const render::OutputKind kind = render::outputKind(out);
     if (kind == render::OutputKind::Folder) render::checkFrameFolder(out);
-    checkOutputWritable(out);
+    requireSampleCount(o.msaa, "--msaa");
     const Signer signer(scenesDir, o.avatarFile, o.boneMapFile.empty() ? BoneMapping{} : loadBoneMapping(o.boneMapFile));
     const VerbClip clip(signer.rig(), signer.shapes(), performance);
-
+    // The renderer first: a device that refuses --msaa, --size or --device stops the command
+    // before anything is created on disk; then the output's place, before any frame.
     render::Renderer renderer(signerRendererOptions(width, height, o.msaa, o.device));
+    checkOutputWritable(out);
     const int handle = renderer.addScene(signer.avatar());
     ClipRenderOptions options;
     options.framesPerSecond = frameRate.value();

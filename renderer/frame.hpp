@@ -26,6 +26,11 @@ struct Camera {
 Camera frameBounds(const Bounds& bounds, float aspect, float verticalFovDegrees = 30.0f,
                    glm::vec3 viewDirection = {0.0f, 0.0f, -1.0f});
 
+// Empty when `camera` can be rendered; otherwise what is wrong with it ("eye and target
+// must differ", ...). The renderer refuses such a view; callers whose camera comes from the
+// user check first, so that the message names the flag or file it came from.
+std::string cameraProblem(const Camera& camera);
+
 struct View {
     int scene = 0;         // handle returned by Renderer::addScene
     Pose pose;             // empty: the scene's rest pose

@@ -32,7 +32,8 @@ std::uint32_t readU32(const std::string& bytes, std::size_t offset) {
 }
 
 std::string at(const std::string& array, std::size_t i) {
-    return array + "[" + std::to_string(i) + "]";
+    // JSON pointer (RFC 6901), as the glTF-Validator reports: at("nodes", 3) == "/nodes/3".
+    return (array.rfind('/', 0) == 0 ? array : "/" + array) + "/" + std::to_string(i);
 }
 
 int componentCount(int type) {
@@ -89,8 +90,8 @@ struct ByteRange {
 
 class Loader {
 public:
-    Loader(fs::path path, std::vector<std::string>* warnings)
-        : path_(std::move(path)), file_(path_.string()), warnings_(warnings) {}
+    Loader(fs::path path, const GltfLoadOptions& options, std::vector<std::string>* warnings)
+        : path_(std::move(path)), file_(path_.string()), options_(options), warnings_(warnings) {}
 
     Scene load() {
         readFile();
@@ -189,11 +190,11 @@ private:
         }
         if (!root_.is_object()) fail("", "not a glTF file: the JSON top level is not an object");
         const auto asset = root_.find("asset");
-        if (asset == root_.end() || !asset->is_object()) fail("asset", "missing (not a glTF 2.0 file?)");
+        if (asset == root_.end() || !asset->is_object()) fail("/asset", "missing (not a glTF 2.0 file?)");
         const auto version = asset->find("version");
         if (version == asset->end() || !version->is_string() ||
             version->get<std::string>().rfind("2.", 0) != 0)
-            fail("asset.version", "not a glTF 2.x file (version must be \"2.0\")");
+            fail("/asset/version", "not a glTF 2.x file (version must be \"2.0\")");
     }
 
     // ---- JSON-level checks: every index reference in range, declared sizes plausible -------
@@ -206,7 +207,7 @@ private:
         static const json empty = json::array();
         const auto it = root_.find(name);
         if (it == root_.end()) return empty;
-        if (!it->is_array()) fail(name, "must be an array");
+        if (!it->is_array()) fail(std::string("/") + name, "must be an array");
         for (std::size_t i = 0; i < it->size(); ++i)
             if (!(*it)[i].is_object()) fail(at(name, i), "must be an object");
         return *it;
@@ -216,10 +217,10 @@ private:
                     const std::string& field, bool required = false) {
         const auto it = object.find(key);
         if (it == object.end()) {
-            if (required) fail(field + "." + key, "is required");
+            if (required) fail(field + "/" + key, "is required");
             return;
         }
-        checkIndexValue(*it, target, count, field + "." + key);
+        checkIndexValue(*it, target, count, field + "/" + key);
     }
     void checkIndexValue(const json& value, const char* target, std::size_t count,
                          const std::string& field) {
@@ -234,32 +235,105 @@ private:
                          const std::string& field) {
         const auto it = object.find(key);
         if (it == object.end()) return;
-        if (!it->is_array()) fail(field + "." + key, "must be an array");
+        if (!it->is_array()) fail(field + "/" + key, "must be an array");
         for (std::size_t i = 0; i < it->size(); ++i)
-            checkIndexValue((*it)[i], target, count, at(field + "." + key, i));
+            checkIndexValue((*it)[i], target, count, at(field + "/" + key, i));
     }
     void checkTextureInfo(const json& parent, const char* key, const std::string& field) {
         const auto it = parent.find(key);
         if (it == parent.end()) return;
-        if (!it->is_object()) fail(field + "." + key, "must be an object");
-        checkIndex(*it, "index", "textures", arraySize("textures"), field + "." + key, true);
+        if (!it->is_object()) fail(field + "/" + key, "must be an object");
+        checkIndex(*it, "index", "textures", arraySize("textures"), field + "/" + key, true);
     }
     std::uint64_t positiveInteger(const json& object, const char* key, const std::string& field) {
         const auto it = object.find(key);
-        if (it == object.end()) fail(field + "." + key, "is required");
+        if (it == object.end()) fail(field + "/" + key, "is required");
         if (!it->is_number_integer() || it->get<std::int64_t>() < 1)
-            fail(field + "." + key, "must be a positive integer");
+            fail(field + "/" + key, "must be a positive integer");
         return it->get<std::uint64_t>();
     }
 
+    // An optional byte offset: a non-negative integer (glTF 2.0 schema: minimum 0). tinygltf
+    // stores offsets unsigned, so a negative one would wrap round to a huge value.
+    void nonNegativeOffset(const json& object, const std::string& field) {
+        const auto it = object.find("byteOffset");
+        if (it == object.end()) return;
+        if (!it->is_number_integer() || it->get<std::int64_t>() < 0)
+            fail(field + "/byteOffset", "must be a non-negative integer, got " + it->dump());
+    }
+
+    // An optional array of `size` numbers in [0, 1] (colour factors, glTF 2.0 material schema).
+    void unitFactors(const json& object, const char* key, std::size_t size, const std::string& field) {
+        const auto it = object.find(key);
+        if (it == object.end()) return;
+        bool ok = it->is_array() && it->size() == size;
+        for (std::size_t i = 0; ok && i < size; ++i)
+            ok = (*it)[i].is_number() && (*it)[i].get<double>() >= 0.0 && (*it)[i].get<double>() <= 1.0;
+        if (!ok)
+            fail(field + "/" + key, "must be " + std::to_string(size) + " numbers in [0, 1], got " + it->dump());
+    }
+
+    // glTF 2.0 §3.12: a file listing an extension in extensionsRequired cannot be shown
+    // correctly without it, and a loader that does not implement it must refuse the file.
+    // signstim implements no extension.
+    void refuseRequiredExtensions() {
+        const auto it = root_.find("extensionsRequired");
+        if (it == root_.end()) return;
+        if (!it->is_array()) fail("/extensionsRequired", "must be an array of extension names");
+        for (std::size_t i = 0; i < it->size(); ++i) {
+            const std::string name = (*it)[i].is_string() ? (*it)[i].get<std::string>() : (*it)[i].dump();
+            fail(at("extensionsRequired", i), "the file requires the extension " + name +
+                                                   ", which signstim does not implement (a glTF loader must "
+                                                   "refuse such a file; export the model without it)");
+        }
+    }
+
+    // Every texture a primitive's material samples names a TEXCOORD_n set the primitive has
+    // (glTF-Validator: MESH_PRIMITIVE_TOO_FEW_TEXCOORDS); without it the texture has no
+    // coordinates to be sampled at.
+    void checkTextureCoordinateSets(const json& meshArray, const json& materialArray) {
+        for (std::size_t m = 0; m < meshArray.size(); ++m) {
+            const json& prims = meshArray[m]["primitives"];
+            for (std::size_t p = 0; p < prims.size(); ++p) {
+                const json& prim = prims[p];
+                const auto material = prim.find("material");
+                if (material == prim.end()) continue;
+                const std::size_t index = material->get<std::size_t>();
+                const std::string mf = at("materials", index);
+                const json& mat = materialArray[index];
+                std::vector<std::pair<const json*, std::string>> infos;
+                for (const char* key : {"normalTexture", "occlusionTexture", "emissiveTexture"})
+                    if (mat.contains(key)) infos.emplace_back(&mat[key], mf + "/" + key);
+                if (const auto pbr = mat.find("pbrMetallicRoughness"); pbr != mat.end() && pbr->is_object())
+                    for (const char* key : {"baseColorTexture", "metallicRoughnessTexture"})
+                        if (pbr->contains(key)) infos.emplace_back(&(*pbr)[key], mf + "/pbrMetallicRoughness/" + key);
+                for (const auto& [info, field] : infos) {
+                    std::int64_t set = 0;
+                    if (const auto texCoord = info->find("texCoord"); texCoord != info->end()) {
+                        if (!texCoord->is_number_integer() || texCoord->get<std::int64_t>() < 0)
+                            fail(field + "/texCoord", "must be a non-negative integer, got " + texCoord->dump());
+                        set = texCoord->get<std::int64_t>();
+                    }
+                    const std::string attribute = "TEXCOORD_" + std::to_string(set);
+                    if (!prim["attributes"].contains(attribute))
+                        fail(field + "/texCoord",
+                             "the texture is sampled with " + attribute + ", but " +
+                                 at(at("meshes", m) + "/primitives", p) +
+                                 " (which uses this material) has no such attribute");
+                }
+            }
+        }
+    }
+
     void precheckJson() {
+        refuseRequiredExtensions();
         const std::size_t nodes = arraySize("nodes"), meshes = arraySize("meshes"),
                           accessors = arraySize("accessors"), views = arraySize("bufferViews"),
                           buffers = arraySize("buffers"), skins = arraySize("skins"),
                           materials = arraySize("materials"), textures = arraySize("textures"),
                           images = arraySize("images"), samplers = arraySize("samplers"),
                           scenes = arraySize("scenes"), cameras = arraySize("cameras");
-        if (root_.contains("scene")) checkIndexValue(root_["scene"], "scenes", scenes, "scene");
+        if (root_.contains("scene")) checkIndexValue(root_["scene"], "scenes", scenes, "/scene");
         const json& sceneArray = array("scenes");
         for (std::size_t i = 0; i < sceneArray.size(); ++i)
             checkIndexArray(sceneArray[i], "nodes", "nodes", nodes, at("scenes", i));
@@ -270,21 +344,28 @@ private:
             checkIndex(nodeArray[i], "mesh", "meshes", meshes, f);
             checkIndex(nodeArray[i], "skin", "skins", skins, f);
             checkIndex(nodeArray[i], "camera", "cameras", cameras, f);
+            // glTF 2.0 §3.5.3: a node has a matrix or TRS properties, never both (which one
+            // would win is undefined).
+            if (nodeArray[i].contains("matrix"))
+                for (const char* key : {"translation", "rotation", "scale"})
+                    if (nodeArray[i].contains(key))
+                        fail(f, std::string("has both matrix and ") + key +
+                                    " (glTF 2.0 allows a matrix or translation/rotation/scale, not both)");
         }
         const json& meshArray = array("meshes");
         for (std::size_t m = 0; m < meshArray.size(); ++m) {
             const auto prims = meshArray[m].find("primitives");
             if (prims == meshArray[m].end() || !prims->is_array() || prims->empty())
-                fail(at("meshes", m) + ".primitives", "must be a non-empty array");
+                fail(at("meshes", m) + "/primitives", "must be a non-empty array");
             for (std::size_t p = 0; p < prims->size(); ++p) {
                 const json& prim = (*prims)[p];
-                const std::string f = at(at("meshes", m) + ".primitives", p);
+                const std::string f = at(at("meshes", m) + "/primitives", p);
                 if (!prim.is_object()) fail(f, "must be an object");
                 const auto attributes = prim.find("attributes");
                 if (attributes == prim.end() || !attributes->is_object())
-                    fail(f + ".attributes", "must be an object");
+                    fail(f + "/attributes", "must be an object");
                 for (const auto& [name, value] : attributes->items())
-                    checkIndexValue(value, "accessors", accessors, f + ".attributes." + name);
+                    checkIndexValue(value, "accessors", accessors, f + "/attributes/" + name);
                 checkIndex(prim, "indices", "accessors", accessors, f);
                 checkIndex(prim, "material", "materials", materials, f);
                 if (const auto targets = prim.find("targets"); targets != prim.end() && targets->is_array())
@@ -292,29 +373,32 @@ private:
                         if ((*targets)[t].is_object())
                             for (const auto& [name, value] : (*targets)[t].items())
                                 checkIndexValue(value, "accessors", accessors,
-                                                at(f + ".targets", t) + "." + name);
+                                                at(f + "/targets", t) + "/" + name);
             }
         }
         const json& accessorArray = array("accessors");
         for (std::size_t i = 0; i < accessorArray.size(); ++i) {
             const std::string f = at("accessors", i);
             checkIndex(accessorArray[i], "bufferView", "bufferViews", views, f);
+            nonNegativeOffset(accessorArray[i], f);
             positiveInteger(accessorArray[i], "count", f);
             if (const auto sparse = accessorArray[i].find("sparse"); sparse != accessorArray[i].end()) {
-                if (!sparse->is_object()) fail(f + ".sparse", "must be an object");
+                if (!sparse->is_object()) fail(f + "/sparse", "must be an object");
                 for (const char* part : {"indices", "values"}) {
                     const auto it = sparse->find(part);
                     if (it == sparse->end() || !it->is_object())
-                        fail(f + ".sparse." + part, "is required");
-                    checkIndex(*it, "bufferView", "bufferViews", views, f + ".sparse." + part, true);
+                        fail(f + "/sparse/" + part, "is required");
+                    checkIndex(*it, "bufferView", "bufferViews", views, f + "/sparse/" + part, true);
+                    nonNegativeOffset(*it, f + "/sparse/" + part);
                 }
-                positiveInteger(*sparse, "count", f + ".sparse");
+                positiveInteger(*sparse, "count", f + "/sparse");
             }
         }
         const json& viewArray = array("bufferViews");
         for (std::size_t i = 0; i < viewArray.size(); ++i) {
             checkIndex(viewArray[i], "buffer", "buffers", buffers, at("bufferViews", i), true);
             positiveInteger(viewArray[i], "byteLength", at("bufferViews", i));
+            nonNegativeOffset(viewArray[i], at("bufferViews", i));
         }
         const json& bufferArray = array("buffers");
         for (std::size_t i = 0; i < bufferArray.size(); ++i) precheckBuffer(bufferArray[i], i);
@@ -323,7 +407,7 @@ private:
             const std::string f = at("skins", i);
             const auto joints = skinArray[i].find("joints");
             if (joints == skinArray[i].end() || !joints->is_array() || joints->empty())
-                fail(f + ".joints", "must be a non-empty array of node indices");
+                fail(f + "/joints", "must be a non-empty array of node indices");
             checkIndexArray(skinArray[i], "joints", "nodes", nodes, f);
             checkIndex(skinArray[i], "skeleton", "nodes", nodes, f);
             checkIndex(skinArray[i], "inverseBindMatrices", "accessors", accessors, f);
@@ -334,24 +418,26 @@ private:
             const json& animation = animationArray[a];
             const auto samplerList = animation.find("samplers");
             const auto channelList = animation.find("channels");
-            if (samplerList == animation.end() || !samplerList->is_array())
-                fail(f + ".samplers", "must be an array");
-            if (channelList == animation.end() || !channelList->is_array())
-                fail(f + ".channels", "must be an array");
+            // glTF 2.0 schema: both arrays have at least one item (an animation that
+            // animates nothing is an error in the glTF-Validator, not an empty clip).
+            if (samplerList == animation.end() || !samplerList->is_array() || samplerList->empty())
+                fail(f + "/samplers", "must be a non-empty array");
+            if (channelList == animation.end() || !channelList->is_array() || channelList->empty())
+                fail(f + "/channels", "must be a non-empty array (an animation without channels animates nothing)");
             for (std::size_t s = 0; s < samplerList->size(); ++s) {
                 const json& sampler = (*samplerList)[s];
-                if (!sampler.is_object()) fail(at(f + ".samplers", s), "must be an object");
-                checkIndex(sampler, "input", "accessors", accessors, at(f + ".samplers", s), true);
-                checkIndex(sampler, "output", "accessors", accessors, at(f + ".samplers", s), true);
+                if (!sampler.is_object()) fail(at(f + "/samplers", s), "must be an object");
+                checkIndex(sampler, "input", "accessors", accessors, at(f + "/samplers", s), true);
+                checkIndex(sampler, "output", "accessors", accessors, at(f + "/samplers", s), true);
             }
             for (std::size_t c = 0; c < channelList->size(); ++c) {
                 const json& channel = (*channelList)[c];
-                const std::string cf = at(f + ".channels", c);
+                const std::string cf = at(f + "/channels", c);
                 if (!channel.is_object()) fail(cf, "must be an object");
-                checkIndex(channel, "sampler", (f + ".samplers").c_str(), samplerList->size(), cf, true);
+                checkIndex(channel, "sampler", (f + "/samplers").c_str(), samplerList->size(), cf, true);
                 const auto target = channel.find("target");
-                if (target == channel.end() || !target->is_object()) fail(cf + ".target", "is required");
-                checkIndex(*target, "node", "nodes", nodes, cf + ".target");
+                if (target == channel.end() || !target->is_object()) fail(cf + "/target", "is required");
+                checkIndex(*target, "node", "nodes", nodes, cf + "/target");
             }
         }
         const json& materialArray = array("materials");
@@ -359,12 +445,15 @@ private:
             const std::string f = at("materials", i);
             const json& material = materialArray[i];
             if (const auto pbr = material.find("pbrMetallicRoughness"); pbr != material.end() && pbr->is_object()) {
-                checkTextureInfo(*pbr, "baseColorTexture", f + ".pbrMetallicRoughness");
-                checkTextureInfo(*pbr, "metallicRoughnessTexture", f + ".pbrMetallicRoughness");
+                checkTextureInfo(*pbr, "baseColorTexture", f + "/pbrMetallicRoughness");
+                checkTextureInfo(*pbr, "metallicRoughnessTexture", f + "/pbrMetallicRoughness");
+                unitFactors(*pbr, "baseColorFactor", 4, f + "/pbrMetallicRoughness");
             }
             for (const char* key : {"normalTexture", "occlusionTexture", "emissiveTexture"})
                 checkTextureInfo(material, key, f);
+            unitFactors(material, "emissiveFactor", 3, f);
         }
+        checkTextureCoordinateSets(meshArray, materialArray);
         const json& textureArray = array("textures");
         for (std::size_t i = 0; i < textureArray.size(); ++i) {
             checkIndex(textureArray[i], "source", "images", images, at("textures", i));
@@ -377,12 +466,67 @@ private:
             checkIndex(imageArray[i], "bufferView", "bufferViews", views, f);
             const auto uri = imageArray[i].find("uri");
             if (uri != imageArray[i].end()) {
-                if (!uri->is_string()) fail(f + ".uri", "must be a string");
-                checkExternalFile(uri->get<std::string>(), f + ".uri");
+                if (!uri->is_string()) fail(f + "/uri", "must be a string");
+                checkExternalFile(uri->get<std::string>(), f + "/uri");
             } else if (!imageArray[i].contains("bufferView")) {
                 fail(f, "needs either uri or bufferView");
             }
         }
+    }
+
+    // The file name tinygltf will open for `uri`: it percent-decodes exactly like this
+    // (dlib::urldecode: "%20" and "+" are spaces), so the checks below look at the same file.
+    static std::string decodedUri(const std::string& uri) {
+        auto hex = [](char c) {
+            if (c >= '0' && c <= '9') return c - '0';
+            if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+            if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+            return 0;
+        };
+        std::string decoded;
+        for (std::size_t i = 0; i < uri.size(); ++i) {
+            if (uri[i] == '+') {
+                decoded += ' ';
+            } else if (uri[i] == '%' && uri.size() > i + 2) {
+                decoded += static_cast<char>((hex(uri[i + 1]) << 4) | hex(uri[i + 2]));
+                i += 2;
+            } else {
+                decoded += uri[i];
+            }
+        }
+        return decoded;
+    }
+
+    // A model names its images and buffers relative to its own folder. One that names an
+    // absolute path, or climbs out of that folder ("../../../../etc/passwd"), would make
+    // rendering a downloaded model read any file the user can read: refused, unless the file
+    // lies in a folder the user allowed (GltfLoadOptions::allowedDirectories). Symbolic links
+    // are followed before comparing, so a link out of the folder counts as leaving it.
+    fs::path checkInsideAllowedFolders(const std::string& name, const std::string& uri, const std::string& field) {
+        const fs::path relative(name);
+        const std::string hint = options_.allowFlag.empty()
+                                     ? std::string()
+                                     : " (a folder elsewhere can be allowed with " + options_.allowFlag + " DIR)";
+        if (relative.is_absolute() || relative.has_root_name() || relative.has_root_directory())
+            fail(field, "'" + uri + "' is an absolute path; glTF files name their images and buffers relative to "
+                                    "the model's folder");
+        std::error_code ec;
+        const fs::path folder = fs::weakly_canonical(fs::absolute(path_).parent_path(), ec);
+        const fs::path file = fs::weakly_canonical(folder / relative, ec);
+        auto inside = [&](const fs::path& directory) {
+            std::error_code error;
+            const fs::path base = fs::weakly_canonical(fs::absolute(directory), error);
+            const fs::path rest = file.lexically_relative(base);
+            return !error && !rest.empty() && *rest.begin() != ".." && rest != ".";
+        };
+        if (ec || !inside(folder)) {
+            bool allowed = false;
+            for (const fs::path& directory : options_.allowedDirectories) allowed = allowed || (!ec && inside(directory));
+            if (!allowed)
+                fail(field, "'" + uri + "' leads out of the model's folder " + folder.string() + " (to " +
+                                file.string() + "): refused" + hint);
+        }
+        return file;
     }
 
     // External file named by a uri (relative to the glTF file). Returns its size; 0 for
@@ -391,7 +535,7 @@ private:
         if (uri.rfind("data:", 0) == 0) return 0;
         if (uri.find("://") != std::string::npos)
             fail(field, "remote resources are not supported: " + uri);
-        const fs::path file = path_.parent_path() / uri;
+        const fs::path file = checkInsideAllowedFolders(decodedUri(uri), uri, field);
         std::error_code ec;
         if (!fs::is_regular_file(file, ec))
             fail(field, "referenced file '" + file.string() + "' not found");
@@ -406,32 +550,32 @@ private:
         const auto uri = buffer.find("uri");
         if (uri == buffer.end()) {
             if (!isGlb_ || i != 0 || !hasBin_)
-                fail(f + ".uri", "is required (only the first buffer of a .glb may use the BIN chunk)");
+                fail(f + "/uri", "is required (only the first buffer of a .glb may use the BIN chunk)");
             if (byteLength > binLength_)
-                fail(f + ".byteLength", "byteLength " + std::to_string(byteLength) +
+                fail(f + "/byteLength", "byteLength " + std::to_string(byteLength) +
                                             " exceeds the " + std::to_string(binLength_) +
                                             " bytes of the GLB binary chunk");
             return;
         }
-        if (!uri->is_string()) fail(f + ".uri", "must be a string");
+        if (!uri->is_string()) fail(f + "/uri", "must be a string");
         const std::string text = uri->get<std::string>();
         if (text.rfind("data:", 0) == 0) {
             const std::size_t comma = text.find(',');
             if (comma == std::string::npos || text.find(";base64", 0) > comma)
-                fail(f + ".uri", "data URI must be base64 encoded (data:...;base64,...)");
+                fail(f + "/uri", "data URI must be base64 encoded (data:...;base64,...)");
             std::uint64_t payload = text.size() - comma - 1;
             std::uint64_t decoded = payload / 4 * 3;
             if (payload >= 1 && text.back() == '=') --decoded;
             if (payload >= 2 && text[text.size() - 2] == '=') --decoded;
             if (byteLength != decoded)  // tinygltf needs an exact match for data URIs
-                fail(f + ".byteLength", "byteLength " + std::to_string(byteLength) +
+                fail(f + "/byteLength", "byteLength " + std::to_string(byteLength) +
                                             (byteLength > decoded ? " exceeds the " : " does not match the ") +
                                             std::to_string(decoded) + " bytes of the embedded data URI");
             return;
         }
-        const std::uint64_t size = checkExternalFile(text, f + ".uri");
+        const std::uint64_t size = checkExternalFile(text, f + "/uri");
         if (byteLength > size)
-            fail(f + ".byteLength", "byteLength " + std::to_string(byteLength) + " exceeds the " +
+            fail(f + "/byteLength", "byteLength " + std::to_string(byteLength) + " exceeds the " +
                                         std::to_string(size) + " bytes of '" + text + "'");
     }
 
@@ -471,19 +615,19 @@ private:
         for (std::size_t i = 0; i < model_.buffers.size(); ++i) {
             // Size agreement was checked before loading; tinygltf may pad, never shrink.
             if (model_.buffers[i].data.size() < static_cast<std::size_t>(root_["buffers"][i]["byteLength"].get<std::uint64_t>()))
-                fail(at("buffers", i) + ".byteLength", "declares more bytes than the buffer holds");
+                fail(at("buffers", i) + "/byteLength", "declares more bytes than the buffer holds");
         }
         for (std::size_t i = 0; i < model_.bufferViews.size(); ++i) {
             const tinygltf::BufferView& view = model_.bufferViews[i];
             const std::string f = at("bufferViews", i);
             const std::uint64_t bufferSize = model_.buffers[static_cast<std::size_t>(view.buffer)].data.size();
             if (view.byteLength > bufferSize || view.byteOffset > bufferSize - view.byteLength)
-                fail(f + ".byteLength", "range [" + std::to_string(view.byteOffset) + ", " +
+                fail(f + "/byteLength", "range [" + std::to_string(view.byteOffset) + ", " +
                                             std::to_string(static_cast<std::uint64_t>(view.byteOffset) + view.byteLength) +
-                                            ") reads past the end of buffers[" + std::to_string(view.buffer) +
-                                            "] (" + std::to_string(bufferSize) + " bytes)");
+                                            ") reads past the end of /buffers/" + std::to_string(view.buffer) +
+                                            " (" + std::to_string(bufferSize) + " bytes)");
             if (view.byteStride != 0 && (view.byteStride < 4 || view.byteStride > 252 || view.byteStride % 4 != 0))
-                fail(f + ".byteStride", "must be a multiple of 4 in [4, 252], got " +
+                fail(f + "/byteStride", "must be a multiple of 4 in [4, 252], got " +
                                             std::to_string(view.byteStride));
         }
     }
@@ -500,13 +644,13 @@ private:
         const std::string f = at("accessors", static_cast<std::size_t>(index));
         const int components = componentCount(a.type);
         const int size = componentSize(a.componentType);
-        if (components == 0) fail(f + ".type", "unknown accessor type");
-        if (size == 0) fail(f + ".componentType", "unknown component type " + std::to_string(a.componentType));
+        if (components == 0) fail(f + "/type", "unknown accessor type");
+        if (size == 0) fail(f + "/componentType", "unknown component type " + std::to_string(a.componentType));
         if (a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
                              a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-            fail(f + ".normalized", "only byte and short components may be normalized");
+            fail(f + "/normalized", "only byte and short components may be normalized");
         if (size < 4 && a.type >= TINYGLTF_TYPE_MAT2 && a.type <= TINYGLTF_TYPE_MAT4)
-            fail(f + ".componentType", "matrices of 8/16-bit components are not supported");
+            fail(f + "/componentType", "matrices of 8/16-bit components are not supported");
         const std::uint64_t elementSize = static_cast<std::uint64_t>(components) * size;
         const std::uint64_t count = a.count;
         ByteRange range;
@@ -514,42 +658,42 @@ private:
             const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
             const std::uint64_t stride = view.byteStride ? view.byteStride : elementSize;
             if (stride < elementSize)
-                fail(f + ".bufferView", "bufferViews[" + std::to_string(a.bufferView) + "].byteStride " +
+                fail(f + "/bufferView", "/bufferViews/" + std::to_string(a.bufferView) + "/byteStride " +
                                             std::to_string(stride) + " is smaller than one " +
                                             typeName(a.type) + " element (" + std::to_string(elementSize) + " bytes)");
             if (a.byteOffset % static_cast<std::size_t>(size) != 0)
-                fail(f + ".byteOffset", "must be a multiple of the component size");
+                fail(f + "/byteOffset", "must be a multiple of the component size");
             // Last byte read: byteOffset + stride * (count - 1) + elementSize, overflow-safe.
             const std::uint64_t viewLength = view.byteLength;
             const bool fits = a.byteOffset <= viewLength && count - 1 <= (viewLength - a.byteOffset) / stride &&
                               a.byteOffset + stride * (count - 1) + elementSize <= viewLength;
             if (!fits)
-                fail(f + ".count", "count " + std::to_string(count) + " of " + typeName(a.type) +
+                fail(f + "/count", "count " + std::to_string(count) + " of " + typeName(a.type) +
                                        " at byteOffset " + std::to_string(a.byteOffset) +
-                                       " reads past the end of bufferViews[" + std::to_string(a.bufferView) +
-                                       "] (" + std::to_string(viewLength) + " bytes)");
+                                       " reads past the end of /bufferViews/" + std::to_string(a.bufferView) +
+                                       " (" + std::to_string(viewLength) + " bytes)");
             range.data = viewData(a.bufferView) + a.byteOffset;
             range.stride = static_cast<std::size_t>(stride);
         } else if (count > kMaxUnbackedCount) {
-            fail(f + ".count", "count " + std::to_string(count) + " without a bufferView is implausibly large");
+            fail(f + "/count", "count " + std::to_string(count) + " without a bufferView is implausibly large");
         }
         if (a.sparse.isSparse) {
-            const std::string sf = f + ".sparse";
+            const std::string sf = f + "/sparse";
             const std::uint64_t sparseCount = static_cast<std::uint64_t>(a.sparse.count);
             if (a.sparse.count < 1 || sparseCount > count)
-                fail(sf + ".count", "must be in [1, accessor count " + std::to_string(count) + "]");
+                fail(sf + "/count", "must be in [1, accessor count " + std::to_string(count) + "]");
             const int indexSize = componentSize(a.sparse.indices.componentType);
             if (a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
                 a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_SHORT ||
                 a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || indexSize == 0)
-                fail(sf + ".indices.componentType", "must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+                fail(sf + "/indices/componentType", "must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
             auto checkPart = [&](const char* part, int view, int offset, std::uint64_t bytesEach) {
                 const std::uint64_t length = model_.bufferViews[static_cast<std::size_t>(view)].byteLength;
                 if (offset < 0 || static_cast<std::uint64_t>(offset) > length ||
                     sparseCount > (length - static_cast<std::uint64_t>(offset)) / bytesEach)
-                    fail(sf + "." + part, std::to_string(sparseCount) + " entries at byteOffset " +
-                                              std::to_string(offset) + " read past the end of bufferViews[" +
-                                              std::to_string(view) + "] (" + std::to_string(length) + " bytes)");
+                    fail(sf + "/" + part, std::to_string(sparseCount) + " entries at byteOffset " +
+                                              std::to_string(offset) + " read past the end of /bufferViews/" +
+                                              std::to_string(view) + " (" + std::to_string(length) + " bytes)");
             };
             checkPart("indices", a.sparse.indices.bufferView, a.sparse.indices.byteOffset,
                       static_cast<std::uint64_t>(indexSize));
@@ -603,11 +747,11 @@ private:
         if (std::find(types.begin(), types.end(), a.type) == types.end()) {
             std::string allowed;
             for (int t : types) allowed += std::string(allowed.empty() ? "" : " or ") + typeName(t);
-            fail(f + ".type", std::string(typeName(a.type)) + " cannot be used as " + usedAs + " (needs " + allowed + ")");
+            fail(f + "/type", std::string(typeName(a.type)) + " cannot be used as " + usedAs + " (needs " + allowed + ")");
         }
         if (componentTypes.size() &&
             std::find(componentTypes.begin(), componentTypes.end(), a.componentType) == componentTypes.end())
-            fail(f + ".componentType", "component type " + std::to_string(a.componentType) +
+            fail(f + "/componentType", "component type " + std::to_string(a.componentType) +
                                            " cannot be used as " + usedAs);
         const ByteRange range = checkAccessor(index);
         const int components = componentCount(a.type);
@@ -627,7 +771,7 @@ private:
                 const auto target = static_cast<std::uint64_t>(
                     readComponent(indices + static_cast<std::size_t>(s) * indexSize, a.sparse.indices.componentType, false));
                 if (target >= a.count)
-                    fail(f + ".sparse.indices", "index " + std::to_string(target) + " out of range (count " +
+                    fail(f + "/sparse/indices", "index " + std::to_string(target) + " out of range (count " +
                                                     std::to_string(a.count) + ")");
                 readElement(sparseValues + static_cast<std::size_t>(s) * components * size, static_cast<std::size_t>(target));
             }
@@ -646,7 +790,7 @@ private:
             if (image.bufferView >= 0 && image.image.empty()) {
                 const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(image.bufferView)];
                 if (view.byteLength > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-                    fail(f + ".bufferView", "image data too large");
+                    fail(f + "/bufferView", "image data too large");
                 std::string err, warnText;
                 if (!tinygltf::LoadImageData(&image, static_cast<int>(i), &err, &warnText, 0, 0,
                                              viewData(image.bufferView), static_cast<int>(view.byteLength), nullptr))
@@ -697,14 +841,14 @@ private:
                         case TINYGLTF_TEXTURE_WRAP_REPEAT: return Wrap::Repeat;
                         case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::ClampToEdge;
                         case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::MirroredRepeat;
-                        default: fail(f + "." + key, "unknown wrap mode " + std::to_string(mode));
+                        default: fail(f + "/" + key, "unknown wrap mode " + std::to_string(mode));
                     }
                 };
                 out.wrapS = wrap(s.wrapS, "wrapS");
                 out.wrapT = wrap(s.wrapT, "wrapT");
                 if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out.magFilter = Filter::Nearest;
                 else if (s.magFilter != -1 && s.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR)
-                    fail(f + ".magFilter", "unknown filter " + std::to_string(s.magFilter));
+                    fail(f + "/magFilter", "unknown filter " + std::to_string(s.magFilter));
                 switch (s.minFilter) {
                     case -1: break;
                     case TINYGLTF_TEXTURE_FILTER_NEAREST: out.minFilter = Filter::Nearest; out.mipmaps = false; break;
@@ -713,7 +857,7 @@ private:
                     case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: out.minFilter = Filter::Nearest; break;
                     case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
                     case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: break;
-                    default: fail(f + ".minFilter", "unknown filter " + std::to_string(s.minFilter));
+                    default: fail(f + "/minFilter", "unknown filter " + std::to_string(s.minFilter));
                 }
             }
             scene.textures.push_back(out);
@@ -732,28 +876,28 @@ private:
             out.name = m.name;
             const auto& pbr = m.pbrMetallicRoughness;
             if (pbr.baseColorFactor.size() != 4 || !finite(pbr.baseColorFactor))
-                fail(f + ".pbrMetallicRoughness.baseColorFactor", "must be 4 finite numbers");
+                fail(f + "/pbrMetallicRoughness/baseColorFactor", "must be 4 finite numbers");
             out.baseColorFactor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
                                             pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
             auto unit = [&](double v, const std::string& field) {
                 if (!(v >= 0.0 && v <= 1.0)) fail(field, "must be in [0, 1]");
                 return static_cast<float>(v);
             };
-            out.metallicFactor = unit(pbr.metallicFactor, f + ".pbrMetallicRoughness.metallicFactor");
-            out.roughnessFactor = unit(pbr.roughnessFactor, f + ".pbrMetallicRoughness.roughnessFactor");
+            out.metallicFactor = unit(pbr.metallicFactor, f + "/pbrMetallicRoughness/metallicFactor");
+            out.roughnessFactor = unit(pbr.roughnessFactor, f + "/pbrMetallicRoughness/roughnessFactor");
             out.baseColorTexture = pbr.baseColorTexture.index;
             out.metallicRoughnessTexture = pbr.metallicRoughnessTexture.index;
             if (pbr.baseColorTexture.texCoord != 0 || pbr.metallicRoughnessTexture.texCoord != 0)
                 warn(f + " uses TEXCOORD_1+; only TEXCOORD_0 is supported");
             if (m.emissiveFactor.size() != 3 || !finite(m.emissiveFactor))
-                fail(f + ".emissiveFactor", "must be 3 finite numbers");
+                fail(f + "/emissiveFactor", "must be 3 finite numbers");
             out.emissiveFactor = glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
             if (m.alphaMode == "OPAQUE" || m.alphaMode.empty()) out.alphaMode = AlphaMode::Opaque;
             else if (m.alphaMode == "MASK") out.alphaMode = AlphaMode::Mask;
             else if (m.alphaMode == "BLEND") out.alphaMode = AlphaMode::Blend;
-            else fail(f + ".alphaMode", "must be OPAQUE, MASK or BLEND, got \"" + m.alphaMode + "\"");
+            else fail(f + "/alphaMode", "must be OPAQUE, MASK or BLEND, got \"" + m.alphaMode + "\"");
             if (!(m.alphaCutoff >= 0.0) || !std::isfinite(m.alphaCutoff))
-                fail(f + ".alphaCutoff", "must be a non-negative number");
+                fail(f + "/alphaCutoff", "must be a non-negative number");
             out.alphaCutoff = static_cast<float>(m.alphaCutoff);
             out.doubleSided = m.doubleSided;
             scene.materials.push_back(out);
@@ -774,7 +918,7 @@ private:
             auto vec = [&](const std::vector<double>& v, std::size_t size, const char* key) {
                 if (v.empty()) return false;
                 if (v.size() != size || !finite(v))
-                    fail(f + "." + key, "must be " + std::to_string(size) + " finite numbers");
+                    fail(f + "/" + key, "must be " + std::to_string(size) + " finite numbers");
                 return true;
             };
             if (vec(n.translation, 3, "translation"))
@@ -783,7 +927,7 @@ private:
             if (vec(n.rotation, 4, "rotation")) {
                 const glm::quat q(static_cast<float>(n.rotation[3]), static_cast<float>(n.rotation[0]),
                                   static_cast<float>(n.rotation[1]), static_cast<float>(n.rotation[2]));
-                if (glm::length(q) < 1e-6f) fail(f + ".rotation", "quaternion has zero length");
+                if (glm::length(q) < 1e-6f) fail(f + "/rotation", "quaternion has zero length");
                 out.rest.rotation = glm::normalize(q);
             }
             if (vec(n.matrix, 16, "matrix")) {
@@ -799,10 +943,10 @@ private:
             for (int child : scene.nodes[i].children) {
                 Node& c = scene.nodes[static_cast<std::size_t>(child)];
                 if (c.parent >= 0 || child == static_cast<int>(i))
-                    fail(at("nodes", i) + ".children",
-                         "nodes[" + std::to_string(child) + "] " +
+                    fail(at("nodes", i) + "/children",
+                         "/nodes/" + std::to_string(child) + " " +
                              (child == static_cast<int>(i) ? std::string("is its own child")
-                                                           : "already has parent nodes[" + std::to_string(c.parent) + "]") +
+                                                           : "already has parent /nodes/" + std::to_string(c.parent)) +
                              " (the node graph must be a forest)");
                 c.parent = static_cast<int>(i);
             }
@@ -819,14 +963,14 @@ private:
             }
         }
         for (std::size_t i = 0; i < count; ++i)
-            if (!reached[i]) fail(at("nodes", i) + ".children", "node is part of a cycle in the node graph");
+            if (!reached[i]) fail(at("nodes", i) + "/children", "node is part of a cycle in the node graph");
 
         if (!model_.scenes.empty()) {
             const std::size_t sceneIndex = model_.defaultScene >= 0 ? static_cast<std::size_t>(model_.defaultScene) : 0;
             scene.roots = model_.scenes[sceneIndex].nodes;
             for (int r : scene.roots)
                 if (scene.nodes[static_cast<std::size_t>(r)].parent >= 0)
-                    fail(at("scenes", sceneIndex) + ".nodes", "nodes[" + std::to_string(r) + "] is not a root node");
+                    fail(at("scenes", sceneIndex) + "/nodes", "/nodes/" + std::to_string(r) + " is not a root node");
         } else {
             for (std::size_t i = 0; i < count; ++i)
                 if (scene.nodes[i].parent < 0) scene.roots.push_back(static_cast<int>(i));
@@ -856,10 +1000,10 @@ private:
             mesh.name = model_.meshes[m].name;
             for (std::size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) {
                 const tinygltf::Primitive& prim = model_.meshes[m].primitives[p];
-                const std::string f = at(at("meshes", m) + ".primitives", p);
+                const std::string f = at(at("meshes", m) + "/primitives", p);
                 if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
                     prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-                    if (prim.mode < 0 || prim.mode > 6) fail(f + ".mode", "unknown primitive mode " + std::to_string(prim.mode));
+                    if (prim.mode < 0 || prim.mode > 6) fail(f + "/mode", "unknown primitive mode " + std::to_string(prim.mode));
                     warn(f + ": points/lines primitive skipped (only triangles are drawn)");
                     continue;
                 }
@@ -869,9 +1013,9 @@ private:
                     return it == prim.attributes.end() ? -1 : it->second;
                 };
                 const int positionIndex = attribute("POSITION");
-                if (positionIndex < 0) fail(f + ".attributes.POSITION", "is required");
+                if (positionIndex < 0) fail(f + "/attributes/POSITION", "is required");
                 const std::vector<double> positions =
-                    readAccessor(positionIndex, {TINYGLTF_TYPE_VEC3}, {}, f + ".attributes.POSITION");
+                    readAccessor(positionIndex, {TINYGLTF_TYPE_VEC3}, {}, f + "/attributes/POSITION");
                 const std::size_t vertexCount = positions.size() / 3;
                 Primitive out;
                 out.material = prim.material;
@@ -883,10 +1027,10 @@ private:
                     const int index = attribute(name);
                     if (index < 0) return std::vector<double>{};
                     std::vector<double> values = readAccessor(index, {type}, componentTypes,
-                                                              f + ".attributes." + name);
+                                                              f + "/attributes/" + name);
                     const std::size_t count = model_.accessors[static_cast<std::size_t>(index)].count;
                     if (count != vertexCount)
-                        fail(f + ".attributes." + name, "has " + std::to_string(count) +
+                        fail(f + "/attributes/" + name, "has " + std::to_string(count) +
                                                             " elements but POSITION has " + std::to_string(vertexCount));
                     return values;
                 };
@@ -908,7 +1052,7 @@ private:
                         Vertex& vertex = out.vertices[v];
                         glm::vec4 w(weights[v * 4], weights[v * 4 + 1], weights[v * 4 + 2], weights[v * 4 + 3]);
                         if (glm::any(glm::lessThan(w, glm::vec4(0.0f))))
-                            fail(f + ".attributes.WEIGHTS_0", "vertex " + std::to_string(v) + " has a negative weight");
+                            fail(f + "/attributes/WEIGHTS_0", "vertex " + std::to_string(v) + " has a negative weight");
                         const float sum = w.x + w.y + w.z + w.w;
                         if (sum <= 1e-6f) {
                             zeroWeights = true;
@@ -925,11 +1069,11 @@ private:
 
                 if (prim.indices >= 0) {
                     const std::vector<double> indices =
-                        readAccessor(prim.indices, {TINYGLTF_TYPE_SCALAR}, {kU8, kU16, kU32}, f + ".indices");
+                        readAccessor(prim.indices, {TINYGLTF_TYPE_SCALAR}, {kU8, kU16, kU32}, f + "/indices");
                     out.indices.reserve(indices.size());
                     for (std::size_t i = 0; i < indices.size(); ++i) {
                         if (indices[i] >= static_cast<double>(vertexCount))
-                            fail(f + ".indices", "index " + std::to_string(static_cast<std::uint64_t>(indices[i])) +
+                            fail(f + "/indices", "index " + std::to_string(static_cast<std::uint64_t>(indices[i])) +
                                                      " (element " + std::to_string(i) + ") is past the vertex count " +
                                                      std::to_string(vertexCount));
                         out.indices.push_back(static_cast<std::uint32_t>(indices[i]));
@@ -1001,10 +1145,10 @@ private:
             out.skeleton = s.skeleton;
             if (s.inverseBindMatrices >= 0) {
                 const std::vector<double> values = readAccessor(s.inverseBindMatrices, {TINYGLTF_TYPE_MAT4},
-                                                                {TINYGLTF_COMPONENT_TYPE_FLOAT}, f + ".inverseBindMatrices");
+                                                                {TINYGLTF_COMPONENT_TYPE_FLOAT}, f + "/inverseBindMatrices");
                 const std::size_t count = values.size() / 16;
                 if (count < out.joints.size())
-                    fail(f + ".inverseBindMatrices", "has " + std::to_string(count) + " matrices for " +
+                    fail(f + "/inverseBindMatrices", "has " + std::to_string(count) + " matrices for " +
                                                          std::to_string(out.joints.size()) + " joints");
                 for (std::size_t j = 0; j < out.joints.size(); ++j) {
                     glm::mat4 m;
@@ -1036,10 +1180,10 @@ private:
                             joint = 0;  // unused influence; keep it harmless
                             continue;
                         }
-                        fail(at(at("meshes", static_cast<std::size_t>(node.mesh)) + ".primitives", p) +
-                                 ".attributes.JOINTS_0",
-                             "vertex " + std::to_string(v) + " uses joint " + std::to_string(joint) + " but skins[" +
-                                 std::to_string(node.skin) + "] (of nodes[" + std::to_string(n) + "]) has " +
+                        fail(at(at("meshes", static_cast<std::size_t>(node.mesh)) + "/primitives", p) +
+                                 "/attributes/JOINTS_0",
+                             "vertex " + std::to_string(v) + " uses joint " + std::to_string(joint) + " but /skins/" +
+                                 std::to_string(node.skin) + " (of /nodes/" + std::to_string(n) + ") has " +
                                  std::to_string(jointCount) + " joints");
                     }
             }
@@ -1055,33 +1199,33 @@ private:
             std::vector<int> samplerOutputType(animation.samplers.size(), 0);
             for (std::size_t s = 0; s < animation.samplers.size(); ++s) {
                 const tinygltf::AnimationSampler& sampler = animation.samplers[s];
-                const std::string sf = at(f + ".samplers", s);
+                const std::string sf = at(f + "/samplers", s);
                 AnimationSampler so;
                 if (sampler.interpolation == "LINEAR" || sampler.interpolation.empty()) so.interpolation = Interpolation::Linear;
                 else if (sampler.interpolation == "STEP") so.interpolation = Interpolation::Step;
                 else if (sampler.interpolation == "CUBICSPLINE") so.interpolation = Interpolation::CubicSpline;
-                else fail(sf + ".interpolation", "must be LINEAR, STEP or CUBICSPLINE, got \"" + sampler.interpolation + "\"");
+                else fail(sf + "/interpolation", "must be LINEAR, STEP or CUBICSPLINE, got \"" + sampler.interpolation + "\"");
                 const std::vector<double> times = readAccessor(sampler.input, {TINYGLTF_TYPE_SCALAR},
-                                                               {TINYGLTF_COMPONENT_TYPE_FLOAT}, sf + ".input");
+                                                               {TINYGLTF_COMPONENT_TYPE_FLOAT}, sf + "/input");
                 for (std::size_t k = 0; k < times.size(); ++k) {
-                    if (times[k] < 0.0) fail(sf + ".input", "key time " + std::to_string(times[k]) + " is negative");
+                    if (times[k] < 0.0) fail(sf + "/input", "key time " + std::to_string(times[k]) + " is negative");
                     if (k > 0 && !(times[k] > times[k - 1]))
-                        fail(sf + ".input", "key times must increase strictly (key " + std::to_string(k) + ")");
+                        fail(sf + "/input", "key times must increase strictly (key " + std::to_string(k) + ")");
                     so.times.push_back(static_cast<float>(times[k]));
                 }
                 const tinygltf::Accessor& output = model_.accessors[static_cast<std::size_t>(sampler.output)];
                 const int width = componentCount(output.type);
                 if (output.type != TINYGLTF_TYPE_VEC3 && output.type != TINYGLTF_TYPE_VEC4 &&
                     output.type != TINYGLTF_TYPE_SCALAR)
-                    fail(at("accessors", static_cast<std::size_t>(sampler.output)) + ".type",
+                    fail(at("accessors", static_cast<std::size_t>(sampler.output)) + "/type",
                          "animation output must be VEC3, VEC4 (or SCALAR for weights)");
                 samplerOutputType[s] = output.type;
                 const std::vector<double> values =
                     readAccessor(sampler.output, {TINYGLTF_TYPE_SCALAR, TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {},
-                                 sf + ".output");
+                                 sf + "/output");
                 const std::size_t expected = times.size() * (so.interpolation == Interpolation::CubicSpline ? 3 : 1);
                 if (output.type != TINYGLTF_TYPE_SCALAR && output.count != expected)
-                    fail(sf + ".output", "has " + std::to_string(output.count) + " values for " +
+                    fail(sf + "/output", "has " + std::to_string(output.count) + " values for " +
                                              std::to_string(times.size()) + " key times (expected " +
                                              std::to_string(expected) + ")");
                 for (std::size_t v = 0; output.type != TINYGLTF_TYPE_SCALAR && v < output.count; ++v) {
@@ -1089,13 +1233,16 @@ private:
                     for (int c = 0; c < width; ++c) value[c] = static_cast<float>(values[v * width + static_cast<std::size_t>(c)]);
                     so.values.push_back(value);
                 }
-                if (!so.times.empty()) out.durationSeconds = std::max(out.durationSeconds, so.times.back());
+                if (!so.times.empty() && so.times.back() >= out.durationSeconds) {
+                    out.durationSeconds = so.times.back();
+                    out.durationSource = at("accessors", static_cast<std::size_t>(sampler.input));
+                }
                 out.samplers.push_back(std::move(so));
             }
             std::vector<char> isRotation(animation.samplers.size(), 0);
             for (std::size_t c = 0; c < animation.channels.size(); ++c) {
                 const tinygltf::AnimationChannel& channel = animation.channels[c];
-                const std::string cf = at(f + ".channels", c);
+                const std::string cf = at(f + "/channels", c);
                 if (channel.target_node < 0) continue;  // extension-targeted channel
                 AnimationChannel co;
                 co.node = channel.target_node;
@@ -1110,13 +1257,13 @@ private:
                     warn(cf + ": morph-target weights animation ignored");
                     continue;
                 } else {
-                    fail(cf + ".target.path", "unknown path \"" + channel.target_path + "\"");
+                    fail(cf + "/target/path", "unknown path \"" + channel.target_path + "\"");
                 }
                 if (samplerOutputType[static_cast<std::size_t>(co.sampler)] != needed)
-                    fail(cf + ".sampler", "output of " + at(f + ".samplers", static_cast<std::size_t>(co.sampler)) +
+                    fail(cf + "/sampler", "output of " + at(f + "/samplers", static_cast<std::size_t>(co.sampler)) +
                                               " is not " + typeName(needed) + " as " + channel.target_path + " needs");
                 if (scene.nodes[static_cast<std::size_t>(co.node)].restMatrix)
-                    fail(cf + ".target.node", "animated nodes must not use `matrix` (glTF 2.0 §3.7.3.2)");
+                    fail(cf + "/target/node", "animated nodes must not use `matrix` (glTF 2.0 §3.7.3.2)");
                 if (co.path == AnimationPath::Rotation) isRotation[static_cast<std::size_t>(co.sampler)] = 1;
                 out.channels.push_back(co);
             }
@@ -1128,7 +1275,7 @@ private:
                 for (std::size_t v = cubic ? 1 : 0; v < sampler.values.size(); v += cubic ? 3 : 1) {
                     const float length = glm::length(sampler.values[v]);
                     if (length < 1e-6f)
-                        fail(at(f + ".samplers", s) + ".output", "rotation key " + std::to_string(cubic ? v / 3 : v) +
+                        fail(at(f + "/samplers", s) + "/output", "rotation key " + std::to_string(cubic ? v / 3 : v) +
                                                                      " is a zero quaternion");
                     sampler.values[v] /= length;
                 }
@@ -1139,6 +1286,7 @@ private:
 
     fs::path path_;
     std::string file_;
+    GltfLoadOptions options_;
     std::vector<std::string>* warnings_;
     std::string bytes_, jsonText_;
     bool isGlb_ = false, hasBin_ = false;
@@ -1150,7 +1298,11 @@ private:
 }  // namespace
 
 Scene loadGltf(const fs::path& path, std::vector<std::string>* warnings) {
-    return Loader(path, warnings).load();
+    return Loader(path, GltfLoadOptions{}, warnings).load();
+}
+
+Scene loadGltf(const fs::path& path, const GltfLoadOptions& options, std::vector<std::string>* warnings) {
+    return Loader(path, options, warnings).load();
 }
 
 }  // namespace signstim::render

@@ -284,21 +284,8 @@ void Renderer::Impl::validateFrame(const Frame& frame) const {
                              "pose has " + std::to_string(view.pose.local.size()) +
                                  " transforms, scene '" + scene.sourceName + "' has " +
                                  std::to_string(scene.nodes.size()) + " nodes");
-        const Camera& camera = view.camera;
-        if (glm::length(camera.target - camera.eye) < 1e-9f ||
-            glm::length(glm::cross(camera.target - camera.eye, camera.up)) < 1e-12f)
-            throw InputError("<frame>", 0, field + ".camera",
-                             "eye, target and up must span a view (eye != target, up not "
-                             "along the view direction)");
-        if (!(camera.nearPlane > 0.0f) || !(camera.farPlane > camera.nearPlane))
-            throw InputError("<frame>", 0, field + ".camera",
-                             "needs 0 < nearPlane < farPlane");
-        if (!camera.orthographic &&
-            !(camera.verticalFovDegrees > 0.0f && camera.verticalFovDegrees < 180.0f))
-            throw InputError("<frame>", 0, field + ".camera.verticalFovDegrees",
-                             "must lie in (0, 180)");
-        if (camera.orthographic && !(camera.orthographicHeight > 0.0f))
-            throw InputError("<frame>", 0, field + ".camera.orthographicHeight", "must be > 0");
+        if (const std::string problem = cameraProblem(view.camera); !problem.empty())
+            throw InputError("<frame>", 0, field + ".camera", problem);
     }
 }
 

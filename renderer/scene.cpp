@@ -142,6 +142,22 @@ Bounds computeBounds(const Scene& scene, const Pose& pose) {
     return bounds;
 }
 
+std::string cameraProblem(const Camera& camera) {
+    const auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    if (!finite(camera.eye) || !finite(camera.target) || !finite(camera.up))
+        return "eye, target and up must be finite (a scene too large for 32-bit floats?)";
+    if (glm::length(camera.target - camera.eye) < 1e-9f ||
+        glm::length(glm::cross(camera.target - camera.eye, camera.up)) < 1e-12f)
+        return "eye, target and up must span a view (eye != target, up not along the view direction)";
+    if (!(camera.nearPlane > 0.0f) || !(camera.farPlane > camera.nearPlane) || !std::isfinite(camera.farPlane))
+        return "needs 0 < near plane < far plane, both finite";
+    if (!camera.orthographic && !(camera.verticalFovDegrees > 0.0f && camera.verticalFovDegrees < 180.0f))
+        return "the vertical field of view must lie in (0, 180) degrees";
+    if (camera.orthographic && !(camera.orthographicHeight > 0.0f && std::isfinite(camera.orthographicHeight)))
+        return "the orthographic height must be > 0";
+    return "";
+}
+
 Camera frameBounds(const Bounds& bounds, float aspect, float verticalFovDegrees,
                    glm::vec3 viewDirection) {
     Camera camera;

@@ -114,6 +114,9 @@ struct Animation {
     std::vector<AnimationSampler> samplers;
     std::vector<AnimationChannel> channels;
     float durationSeconds = 0.0f;  // max over samplers' last time
+    // Where durationSeconds comes from, for messages about it: the glTF input accessor
+    // holding the last key ("/accessors/4"); empty for animations not loaded from a file.
+    std::string durationSource;
 };
 
 struct Scene {

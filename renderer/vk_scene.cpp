@@ -178,7 +178,7 @@ const GpuImage& GpuScene::textureImage(const Device& device, const CommandPool& 
     const ImageData& data = cpu_.images.at(static_cast<std::size_t>(index));
     if (data.width == 0 || data.height == 0 ||
         data.rgba.size() != std::size_t(data.width) * data.height * 4)
-        throw InputError(cpu_.sourceName, 0, "images[" + std::to_string(index) + "]",
+        throw InputError(cpu_.sourceName, 0, "/images/" + std::to_string(index),
                          "image '" + data.name + "' has no decoded RGBA pixels");
     GpuImage image = uploadImage(device, commands, data.width, data.height, data.rgba.data(), srgb,
                               true);
@@ -211,7 +211,7 @@ GpuScene::GpuScene(const Device& device, const CommandPool& commands, Scene scen
             gpu.skinned = primitive.skinned;
             for (std::uint32_t index : primitive.indices) {
                 if (index >= primitive.vertices.size())
-                    throw InputError(cpu_.sourceName, 0, "meshes[" + std::to_string(m) + "]",
+                    throw InputError(cpu_.sourceName, 0, "/meshes/" + std::to_string(m),
                                      "index " + std::to_string(index) + " out of range");
             }
             vertices.insert(vertices.end(), primitive.vertices.begin(), primitive.vertices.end());

@@ -77,11 +77,13 @@ TEST(DemoCli, BadInputIsRefusedBeforeAnythingIsWritten) {
         {"--subject 1.5", "--subject"},
         {"--verbs WAVE", "WAVE"},
         {"--fps 0", "--fps"},
+        {"--verbs MEET,MEET", "MEET is listed twice"},
+        {"--msaa 3", "--msaa"},
     };
     for (const auto& c : cases) {
         const fs::path out = freshDir("bad");
         const auto r = demo(out, c.extra);
-        EXPECT_EQ(r.status, 2) << c.extra << ": " << r.output;
+        EXPECT_EQ(r.status, 1) << c.extra << ": " << r.output;  // flag mistakes: usage errors
         EXPECT_NE(r.output.find(c.mentions), std::string::npos) << c.extra << ": " << r.output;
         EXPECT_FALSE(fs::exists(out)) << c.extra << " left output behind";
     }

@@ -3,6 +3,7 @@
 #include "renderer/gltf_writer.hpp"
 #include "renderer/image_io.hpp"
 #include "tests/app/run_command.hpp"
+#include "tests/renderer/gltf_test_files.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/quaternion.hpp>
@@ -165,7 +166,7 @@ TEST(RenderGltfCli, UnwritableOutputIsRefusedBeforeRendering) {
 TEST(RenderGltfCli, UnknownAnimationListsTheAvailableOnes) {
     const fs::path dir = testDir();
     const Result r = runSignstim("render-gltf " + q(writeArm(dir)) + " --out " + q(dir / "x.png") + " --animation wave");
-    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_EQ(r.status, 1) << r.output;  // a flag's value: usage
     EXPECT_NE(r.output.find("'bend'"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
@@ -258,4 +259,65 @@ TEST(RenderGltfCliRefuses, AbsurdByteLength) {
     text.replace(at, end - at, "\"byteLength\": 1000000000000");
     std::ofstream(path, std::ios::binary) << text;
     expectBrokenInputRefused(path, "exceeds");
+}
+
+TEST(RenderGltfCliRefuses, RequiredExtension) {
+    signstim::render::testing::GltfBuilder b = signstim::render::testing::triangleGltf();
+    b.doc["extensionsUsed"] = b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    expectBrokenInputRefused(b.write(testDir(), "draco.gltf", signstim::render::testing::Container::Embedded),
+                             "KHR_draco_mesh_compression");
+}
+
+TEST(RenderGltfCliRefuses, BufferOutsideTheModelsFolderUnlessAllowed) {
+    const fs::path dir = testDir();
+    const fs::path model = signstim::render::testing::triangleGltf().write(
+        dir / "model", "tri.gltf", signstim::render::testing::Container::ExternalBuffer);
+    fs::create_directories(dir / "lab-data");
+    fs::rename(dir / "model" / "tri.gltf.bin", dir / "lab-data" / "tri.bin");
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(model));
+    doc["buffers"][0]["uri"] = "../lab-data/tri.bin";
+    std::ofstream(model) << doc.dump();
+    expectBrokenInputRefused(model, "--allow-dir");  // the message says how to allow it
+    const fs::path out = dir / "out" / "tri.png";
+    const Result r = runSignstim("render-gltf " + q(model) + " --out " + q(out) + " --size 32x32 --quiet --allow-dir " +
+                                 q(dir / "lab-data"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::exists(out));
+}
+
+// A key at 1e9 s made 0/-2147483647 frames, an empty folder and exit status 0.
+TEST(RenderGltfCliRefuses, AnimationLongerThanAnHour) {
+    const fs::path dir = testDir();
+    const fs::path model = signstim::render::testing::animatedTriangleGltf({0.0f, 1e9f}).write(
+        dir, "long.gltf", signstim::render::testing::Container::Embedded);
+    for (const char* target : {"seq", "v.mp4"}) {
+        const Result r = runSignstim("render-gltf " + q(model) + " --out " + q(dir / "out" / target) + " --size 32x32");
+        EXPECT_EQ(r.status, 2) << r.output;
+        EXPECT_NE(r.output.find("long.gltf: field '/accessors/2'"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("30000000001 frames at 30 fps, more than one hour (108001 frames)"), std::string::npos)
+            << r.output;
+        EXPECT_FALSE(fs::exists(dir / "out")) << r.output;
+    }
+    // --frames spreads a given number of frames over it; more than an hour's worth is a usage error.
+    const Result tooMany = runSignstim("render-gltf " + q(model) + " --out " + q(dir / "out" / "seq") +
+                                       " --size 32x32 --frames 200000 --fps 25");
+    EXPECT_EQ(tooMany.status, 1) << tooMany.output;
+    EXPECT_NE(tooMany.output.find("--frames"), std::string::npos) << tooMany.output;
+    EXPECT_NE(tooMany.output.find("1 to 90001"), std::string::npos) << tooMany.output;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+    const Result few = runSignstim("render-gltf " + q(model) + " --out " + q(dir / "out" / "seq") +
+                                   " --size 32x32 --msaa 1 --frames 3 --quiet");
+    EXPECT_EQ(few.status, 0) << few.output;
+    EXPECT_TRUE(fs::exists(dir / "out" / "seq" / "frame_00003.png"));
+}
+
+TEST(RenderGltfCliRefuses, CameraThatCannotViewNamesTheFlag) {
+    const fs::path dir = testDir();
+    // Looking straight down the up vector: no view direction is defined.
+    const Result r = runSignstim("render-gltf " + q(writeArm(dir)) + " --out " + q(dir / "out" / "x.png") +
+                                 " --camera 'eye=0,5,0;target=0,0,0;up=0,1,0'");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("--camera"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("<frame>"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out"));
 }

@@ -85,25 +85,26 @@ TEST(VerbCli, PointJsonIsAStartingAnimatorFile) {
 }
 
 TEST(VerbCli, UserMistakesAreClearErrors) {
+    // Flag mistakes are usage errors (exit 1); a missing data file is an input error (exit 2).
     CommandResult r = run("verb ASK --subject 1.5 --object 0 --version point --json");
-    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("--subject"), std::string::npos) << r.output;
     r = run("verb ASK --subject 0 --object -1.01 --version point --json");
-    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("--object"), std::string::npos) << r.output;
     r = run("verb HUG --subject 0 --object 0.5 --version point");
-    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("ASK, GIVE, MEET, SCOLD, TELL, COPY, EMAIL, SEND"), std::string::npos) << r.output;
     r = run("verb ASK --subject 0.3 --object 0.6 --version animator --json");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("ASK_s0.3_o0.6.json"), std::string::npos) << r.output;
     const fs::path clip = workDir() / "never.mp4";
     r = run("verb ASK --subject 0.9 --object -0.6 --version point --size 15x15 --out " + clip.string());
-    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(clip));
     r = run("verb ASK --object -0.6 --version point --json");
-    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("--subject"), std::string::npos) << r.output;
     // Object-only verbs ignore the subject.
     EXPECT_EQ(run("verb TELL --object -0.6 --version point --json").output,

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 
 using namespace signstim;
@@ -225,32 +226,32 @@ TEST(GltfLoaderRefuses, RandomBytes) {
 TEST(GltfLoaderRefuses, BufferIndexOutOfRange) {
     GltfBuilder b = triangleGltf();
     b.doc["bufferViews"][1]["buffer"] = 3;
-    expectRefused(b.write(testDir(), "b.gltf", Container::Embedded), {"bufferViews[1].buffer", "out of range"});
+    expectRefused(b.write(testDir(), "b.gltf", Container::Embedded), {"/bufferViews/1/buffer", "out of range"});
 }
 
 TEST(GltfLoaderRefuses, BufferViewIndexOutOfRange) {
     GltfBuilder b = triangleGltf();
     b.doc["accessors"][0]["bufferView"] = 7;
-    expectRefused(b.write(testDir(), "v.gltf", Container::Embedded), {"accessors[0].bufferView", "out of range"});
+    expectRefused(b.write(testDir(), "v.gltf", Container::Embedded), {"/accessors/0/bufferView", "out of range"});
 }
 
 TEST(GltfLoaderRefuses, AccessorIndexOutOfRange) {
     GltfBuilder b = triangleGltf();
     b.doc["meshes"][0]["primitives"][0]["indices"] = 42;
     expectRefused(b.write(testDir(), "a.gltf", Container::Embedded),
-                  {"meshes[0].primitives[0].indices", "out of range"});
+                  {"/meshes/0/primitives/0/indices", "out of range"});
 }
 
 TEST(GltfLoaderRefuses, AccessorReadingPastItsBuffer) {
     GltfBuilder b = triangleGltf();
     b.doc["accessors"][0]["count"] = 1000;
-    expectRefused(b.write(testDir(), "p.gltf", Container::Embedded), {"accessors[0].count", "past the end"});
+    expectRefused(b.write(testDir(), "p.gltf", Container::Embedded), {"/accessors/0/count", "past the end"});
 }
 
 TEST(GltfLoaderRefuses, BufferViewReadingPastItsBuffer) {
     GltfBuilder b = triangleGltf();
     b.doc["bufferViews"][0]["byteOffset"] = 40;
-    expectRefused(b.write(testDir(), "bv.glb", Container::Glb), {"bufferViews[0]", "past the end"});
+    expectRefused(b.write(testDir(), "bv.glb", Container::Glb), {"/bufferViews/0", "past the end"});
 }
 
 TEST(GltfLoaderRefuses, AbsurdByteLength) {
@@ -259,7 +260,7 @@ TEST(GltfLoaderRefuses, AbsurdByteLength) {
     nlohmann::json doc = nlohmann::json::parse(std::ifstream(path));
     doc["buffers"][0]["byteLength"] = 1ull << 50;
     std::ofstream(path) << doc.dump();
-    expectRefused(path, {"buffers[0].byteLength", "exceeds", "huge.gltf.bin"});
+    expectRefused(path, {"/buffers/0/byteLength", "exceeds", "huge.gltf.bin"});
 }
 
 TEST(GltfLoaderRefuses, AbsurdByteLengthInGlb) {
@@ -284,13 +285,13 @@ TEST(GltfLoaderRefuses, AbsurdByteLengthInGlb) {
     std::uint32_t total = static_cast<std::uint32_t>(bytes.size());
     std::memcpy(bytes.data() + 8, &total, 4);
     std::ofstream(path, std::ios::binary) << bytes;
-    expectRefused(path, {"buffers[0].byteLength", "exceeds"});
+    expectRefused(path, {"/buffers/0/byteLength", "exceeds"});
 }
 
 TEST(GltfLoaderRefuses, MissingExternalBufferFile) {
     const fs::path path = triangleGltf().write(testDir(), "lost.gltf", Container::ExternalBuffer);
     fs::remove(path.parent_path() / "lost.gltf.bin");
-    expectRefused(path, {"buffers[0].uri", "lost.gltf.bin", "not found"});
+    expectRefused(path, {"/buffers/0/uri", "lost.gltf.bin", "not found"});
 }
 
 TEST(GltfLoaderRefuses, IndexPastVertexCount) {
@@ -298,33 +299,185 @@ TEST(GltfLoaderRefuses, IndexPastVertexCount) {
     const int positions = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
     const int indices = b.addAccessor(b.addView(std::vector<std::uint32_t>{0, 1, 3}), 5125, 3, "SCALAR");
     b.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indices}}}}}};
-    expectRefused(b.write(testDir(), "idx.gltf", Container::Embedded), {"meshes[0].primitives[0].indices", "vertex count"});
+    expectRefused(b.write(testDir(), "idx.gltf", Container::Embedded), {"/meshes/0/primitives/0/indices", "vertex count"});
 }
 
 TEST(GltfLoaderRefuses, JointPastSkinJoints) {
     GltfBuilder b = skinnedGltf(true);
     b.doc["skins"][0]["joints"] = {1};
     b.doc["skins"][0].erase("inverseBindMatrices");
-    expectRefused(b.write(testDir(), "j.gltf", Container::Embedded), {"JOINTS_0", "joint 1", "skins[0]"});
+    expectRefused(b.write(testDir(), "j.gltf", Container::Embedded), {"JOINTS_0", "joint 1", "/skins/0"});
 }
 
 TEST(GltfLoaderRefuses, NaNPosition) {
     GltfBuilder b;
     const int positions = b.addFloats({0, 0, 0, NAN, 0, 0, 0, 1, 0}, "VEC3", 3);
     b.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", positions}}}}}}}};
-    expectRefused(b.write(testDir(), "nan.gltf", Container::Embedded), {"accessors[0]", "not finite"});
+    expectRefused(b.write(testDir(), "nan.gltf", Container::Embedded), {"/accessors/0", "not finite"});
 }
 
 TEST(GltfLoaderRefuses, CycleInNodeGraph) {
     GltfBuilder b = triangleGltf();
     b.doc["nodes"] = {{{"children", {1}}}, {{"children", {0}}}};
     b.doc["scenes"][0]["nodes"] = nlohmann::json::array();
-    expectRefused(b.write(testDir(), "cycle.gltf", Container::Embedded), {"nodes[", "cycle"});
+    expectRefused(b.write(testDir(), "cycle.gltf", Container::Embedded), {"/nodes/", "cycle"});
 }
 
 TEST(GltfLoaderRefuses, NodeWithTwoParents) {
     GltfBuilder b = triangleGltf();
     b.doc["nodes"] = {{{"children", {2}}}, {{"children", {2}}}, {{"mesh", 0}}};
     b.doc["scenes"][0]["nodes"] = {0, 1};
-    expectRefused(b.write(testDir(), "dag.gltf", Container::Embedded), {"nodes[1].children", "already has parent"});
+    expectRefused(b.write(testDir(), "dag.gltf", Container::Embedded), {"/nodes/1/children", "already has parent"});
+}
+
+// ---- What the Khronos glTF-Validator flags: refused with the JSON pointer of the field ----
+
+TEST(GltfLoaderRefuses, NegativeBufferViewByteOffset) {
+    GltfBuilder b = triangleGltf();
+    b.doc["bufferViews"][1]["byteOffset"] = -4;
+    expectRefused(b.write(testDir(), "offset.gltf", Container::Embedded),
+                  {"/bufferViews/1/byteOffset", "non-negative", "-4"});
+}
+
+TEST(GltfLoaderRefuses, NegativeAccessorByteOffset) {
+    GltfBuilder b = triangleGltf();
+    b.doc["accessors"][0]["byteOffset"] = -12;
+    expectRefused(b.write(testDir(), "offset.glb", Container::Glb), {"/accessors/0/byteOffset", "non-negative"});
+}
+
+TEST(GltfLoaderRefuses, BaseColorFactorOutsideZeroToOne) {
+    for (const nlohmann::json& factor : {nlohmann::json{1.0, 0.5, 2.0, 1.0}, nlohmann::json{1.0, 0.5, 0.2},
+                                         nlohmann::json{1.0, -0.1, 0.2, 1.0}, nlohmann::json{1.0, "red", 0.2, 1.0}}) {
+        GltfBuilder b = triangleGltf();
+        b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", factor}}}}};
+        b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+        expectRefused(b.write(testDir(), "colour.gltf", Container::Embedded),
+                      {"/materials/0/pbrMetallicRoughness/baseColorFactor", "4 numbers in [0, 1]"});
+    }
+}
+
+TEST(GltfLoaderRefuses, TextureSampledWithACoordinateSetThePrimitiveLacks) {
+    GltfBuilder b = triangleGltf();  // POSITION only: no TEXCOORD_n at all
+    b.doc["images"] = {{{"uri", "data:image/png;base64,iVBORw0KGgo="}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}}};
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    expectRefused(b.write(testDir(), "uv.gltf", Container::Embedded),
+                  {"/materials/0/pbrMetallicRoughness/baseColorTexture/texCoord", "TEXCOORD_1", "/meshes/0/primitives/0"});
+    // texCoord absent means set 0, which the primitive lacks as well.
+    b.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"].erase("texCoord");
+    expectRefused(b.write(testDir(), "uv0.gltf", Container::Embedded), {"baseColorTexture/texCoord", "TEXCOORD_0"});
+}
+
+TEST(GltfLoaderRefuses, AnimationWithoutChannels) {
+    GltfBuilder b = animatedTriangleGltf({0.0f, 1.0f});
+    b.doc["animations"][0]["channels"] = nlohmann::json::array();
+    expectRefused(b.write(testDir(), "idle.gltf", Container::Embedded), {"/animations/0/channels", "non-empty"});
+}
+
+TEST(GltfLoaderRefuses, NodeWithBothMatrixAndTrs) {
+    GltfBuilder b = triangleGltf();
+    b.doc["nodes"].push_back({{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}}, {"scale", {2, 2, 2}}});
+    b.doc["nodes"][0]["children"] = {1};
+    expectRefused(b.write(testDir(), "both.gltf", Container::Embedded), {"/nodes/1'", "matrix", "scale"});
+}
+
+TEST(GltfLoaderRefuses, RequiredExtensionItDoesNotImplement) {
+    GltfBuilder b = triangleGltf();
+    b.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    expectRefused(b.write(testDir(), "draco.glb", Container::Glb),
+                  {"/extensionsRequired/0", "KHR_draco_mesh_compression", "does not implement"});
+    // Used but not required: the file is meant to load without it.
+    b.doc.erase("extensionsRequired");
+    expectTriangle(loadGltf(b.write(testDir(), "optional.glb", Container::Glb)));
+}
+
+TEST(GltfLoaderRefuses, NonFiniteKeyTime) {
+    const fs::path path = animatedTriangleGltf({0.0f, INFINITY}).write(testDir(), "forever.gltf", Container::Embedded);
+    expectRefused(path, {"/accessors/2", "/animations/0/samplers/0/input", "not finite"});
+}
+
+TEST(GltfLoaderRefuses, NonFiniteKeyValue) {
+    GltfBuilder b = animatedTriangleGltf({0.0f, 1.0f});
+    float nan = NAN;
+    std::memcpy(b.bin.data() + b.doc["bufferViews"][3]["byteOffset"].get<std::size_t>() + 4, &nan, 4);
+    expectRefused(b.write(testDir(), "nan.gltf", Container::Embedded),
+                  {"/accessors/3", "/animations/0/samplers/0/output", "not finite"});
+}
+
+TEST(GltfLoader, AnimationNamesTheAccessorOfItsLastKey) {
+    // A key at 1e9 s is a valid file; whoever samples it decides whether that is too long
+    // and names this accessor when refusing (render-gltf: more than one hour).
+    const Scene scene = loadGltf(animatedTriangleGltf({0.0f, 1e9f}).write(testDir(), "long.gltf", Container::Embedded));
+    ASSERT_EQ(scene.animations.size(), 1u);
+    EXPECT_FLOAT_EQ(scene.animations[0].durationSeconds, 1e9f);
+    EXPECT_EQ(scene.animations[0].durationSource, "/accessors/2");
+}
+
+// ---- URIs stay in the model's folder unless the user allows another ----
+
+namespace {
+
+// triangleGltf() with its buffer in `dir`/`binName` (any relative or absolute path) and the
+// glTF in `dir`/model/model.gltf naming it by `uri`.
+fs::path modelWithBufferAt(const fs::path& dir, const fs::path& binFile, const std::string& uri) {
+    GltfBuilder b = triangleGltf();
+    const fs::path model = b.write(dir / "model", "model.gltf", Container::ExternalBuffer);
+    fs::create_directories(binFile.parent_path());
+    fs::rename(dir / "model" / "model.gltf.bin", binFile);
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(model));
+    doc["buffers"][0]["uri"] = uri;
+    std::ofstream(model) << doc.dump();
+    return model;
+}
+
+}  // namespace
+
+TEST(GltfLoaderRefuses, BufferUriLeavingTheModelsFolder) {
+    const fs::path dir = testDir();
+    const fs::path model = modelWithBufferAt(dir, dir / "elsewhere" / "data.bin", "../elsewhere/data.bin");
+    expectRefused(model, {"/buffers/0/uri", "../elsewhere/data.bin", "leads out of the model's folder"});
+    // The same file, allowed by the user.
+    GltfLoadOptions options;
+    options.allowedDirectories = {dir / "elsewhere"};
+    options.allowFlag = "--allow-dir";
+    expectTriangle(loadGltf(model, options));
+    // Allowing another folder does not allow this one.
+    options.allowedDirectories = {dir / "model"};
+    EXPECT_THROW(loadGltf(model, options), InputError);
+}
+
+TEST(GltfLoaderRefuses, ImageUriReadingSystemFiles) {
+    GltfBuilder b = triangleGltf();
+    b.doc["images"] = {{{"uri", "../../../../../../../../etc/passwd"}}};
+    GltfLoadOptions options;
+    options.allowFlag = "--allow-dir";
+    const fs::path path = b.write(testDir(), "thief.gltf", Container::Embedded);
+    try {
+        loadGltf(path, options);
+        ADD_FAILURE() << "loaded " << path;
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("/images/0/uri"), std::string::npos) << message;
+        EXPECT_NE(message.find("leads out of"), std::string::npos) << message;
+        EXPECT_NE(message.find("--allow-dir"), std::string::npos) << message;  // says how to allow one
+    }
+    // Percent-encoded dots are decoded (as tinygltf does) before the check.
+    b.doc["images"][0]["uri"] = "%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/etc/passwd";
+    expectRefused(b.write(testDir(), "encoded.gltf", Container::Embedded), {"/images/0/uri", "leads out of"});
+    b.doc["images"][0]["uri"] = "/etc/passwd";
+    expectRefused(b.write(testDir(), "absolute.gltf", Container::Embedded), {"/images/0/uri", "absolute path"});
+}
+
+TEST(GltfLoaderRefuses, SymbolicLinkOutOfTheModelsFolder) {
+    const fs::path dir = testDir();
+    const fs::path model = modelWithBufferAt(dir, dir / "outside" / "data.bin", "link.bin");
+    fs::create_symlink(dir / "outside" / "data.bin", dir / "model" / "link.bin");
+    expectRefused(model, {"/buffers/0/uri", "leads out of"});
+}
+
+TEST(GltfLoader, RelativeUriInsideTheModelsFolderLoads) {
+    const fs::path dir = testDir();
+    expectTriangle(loadGltf(modelWithBufferAt(dir, dir / "model" / "data" / "tri.bin", "data/../data/tri.bin")));
 }

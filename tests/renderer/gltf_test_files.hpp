@@ -120,4 +120,18 @@ inline GltfBuilder triangleGltf() {
     return b;
 }
 
+// triangleGltf() with one animation "slide": node 0's translation x = key time at each of
+// `times` (LINEAR). Accessors: 0 positions, 1 indices, 2 key times, 3 translations.
+inline GltfBuilder animatedTriangleGltf(const std::vector<float>& times) {
+    GltfBuilder b = triangleGltf();
+    const int input = b.addFloats(times, "SCALAR", 1);
+    std::vector<float> translations;
+    for (float t : times) translations.insert(translations.end(), {t, 0.0f, 0.0f});
+    const int output = b.addFloats(translations, "VEC3", 3);
+    b.doc["animations"] = {{{"name", "slide"},
+                            {"samplers", {{{"input", input}, {"output", output}, {"interpolation", "LINEAR"}}}},
+                            {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}}}};
+    return b;
+}
+
 }  // namespace signstim::render::testing
