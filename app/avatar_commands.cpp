@@ -70,19 +70,21 @@ glm::quat signingSpaceRotation(const glm::vec3& rotationVectorDeg) {
 void renderToFile(const render::Scene& scene, const std::function<render::Frame(int)>& makeFrame,
                   std::uint32_t width, std::uint32_t height, const std::string& device, std::uint32_t msaa,
                   const std::string& out) {
+    // The renderer first: a device that refuses --msaa or --device stops the command before
+    // anything is created on disk; then the output's place, before the frame is drawn.
     render::Renderer renderer(signerRendererOptions(width, height, msaa, device));
+    checkOutputWritable(out);
     const int handle = renderer.addScene(scene);
     render::Image image;
     renderer.render(makeFrame(handle), image);
     render::writeImage(image, out);
 }
 
-// Before any work: `out` must name an image file the writers handle, in a place that
-// accepts new files (exit 1 for the name, 3 for the place).
+// Before any work: `out` must name an image file the writers handle (exit 1); its place is
+// probed once the renderer exists (renderToFile; exit 3).
 void checkImageOutput(const std::string& out, const std::string& flag) {
     if (render::outputKind(out, flag) != render::OutputKind::Image)
         throw commandLineError(flag, "'" + out + "': give an image file name ending in .png, .exr, .tif or .tiff");
-    checkOutputWritable(out);
 }
 
 void reportArm(const char* side, const hand::ArmPose& arm) {

@@ -135,9 +135,7 @@ void renderGltf(const RenderGltfSettings& s) {
                                                out.string() + " (a single image)");
     if (kind == render::OutputKind::Video && (options.width % 2 || options.height % 2))
         throw commandLineError("--size", s.size + ": MP4 (H.264, yuv420p) needs an even width and height");
-    // Fail on a bad output location now, not after rendering.
     if (kind == render::OutputKind::Folder) render::checkFrameFolder(out);
-    checkOutputWritable(out);
     // Frame i shows the animation at duration * i / (frames - 1): first and last key included.
     auto timeOf = [&](std::int64_t i) {
         return frames > 1 ? static_cast<float>(static_cast<double>(duration) * static_cast<double>(i) /
@@ -177,7 +175,7 @@ void renderGltf(const RenderGltfSettings& s) {
     // before anything is created on disk.
     render::Renderer renderer(options);
     // Fail on a bad output location now, not after rendering.
-    ensureWritableDirectory(singleImage || ext == ".mp4" ? out.parent_path() : out);
+    checkOutputWritable(out);
     const int handle = renderer.addScene(scene);
     std::unique_ptr<render::FrameSink> sink = render::makeFrameSink(out, imageOptions, video);
 
