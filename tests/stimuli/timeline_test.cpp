@@ -1,0 +1,250 @@
+// Timelines (stimuli/timeline.hpp): a story in each of the four versions differs only inside
+// the verb slots; the hands start and end at rest and move without jumps; fingerspelled
+// letters are held; gaze follows pointing and the verb's object.
+#include "stimuli/timeline.hpp"
+
+#include "stimuli/signing_space.hpp"
+#include "stimuli/sora.hpp"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <cstring>
+#include <string>
+
+namespace signstim::stimuli {
+namespace {
+
+const std::string kSource = SIGNSTIM_SOURCE_DIR;
+
+struct World {
+    hand::HandModel model = hand::buildHandModel();
+    HandshapeLibrary shapes = loadHandshapes(kSource + "/scenes/handshapes.json", model);
+    VerbLibrary verbs = loadVerbLibrary(kSource + "/scenes/verbs.json");
+    TrainedVerbModels models = loadVerbModels(kSource + "/scenes/models/verb_models.json", verbs);
+    Lexicon lexicon = parseLexicon(parseJsonText(R"({
+  "format": "signstim-lexicon", "version": 1,
+  "locations": {"chest": [0, 0, 110], "chin": [0, 255, 95]},
+  "signs": [
+    {"gloss": "MY", "hands": ["right"], "keyframes": {"right": [
+      {"time": 0, "at": "chest", "offset": [0, 0, 60], "touch": "palm", "fingers": [-0.3, 1, 0], "palm": [0, 0, -1], "handshape": "B"},
+      {"time": 0.25, "at": "chest", "touch": "palm", "fingers": [-0.3, 1, 0], "palm": [0, 0, -1], "handshape": "B"}]}},
+    {"gloss": "HELP", "hands": ["right", "left"], "keyframes": {
+      "right": [
+        {"time": 0, "position": [0, -100, 300], "fingers": [0, 0, 1], "palm": [-1, 0, 0], "handshape": "A"},
+        {"time": 0.4, "position": [0, 20, 300], "fingers": [0, 0, 1], "palm": [-1, 0, 0], "handshape": "A"}],
+      "left": [
+        {"time": 0, "position": [-20, -150, 280], "fingers": [0.3, 0, 1], "palm": [0, 1, 0], "handshape": "B"},
+        {"time": 0.4, "position": [-20, -30, 280], "fingers": [0.3, 0, 1], "palm": [0, 1, 0], "handshape": "B"}]}}
+  ]})", "test-lexicon.json"), shapes, model);
+    Story story = parseStory(parseJsonText(R"({
+  "format": "signstim-story", "version": 1, "title": "T",
+  "characters": [{"gloss": "JOHN", "position": 0.9}, {"gloss": "MARY", "position": -0.6}],
+  "sentences": [
+    "JOHN IX(0.9) MY",
+    "JOHN ASK MARY IX(-0.6) HELP",
+    "IX(MARY) TELL IX(JOHN) HOLD",
+    "fs-ANN MY"
+  ],
+  "questions": [{"question": "Q", "choices": ["a", "b", "c"], "answer": "A", "probes": {"sentence": 2, "verb": "ASK"}}]
+})", "test-story.json"), StoryVocabulary{&verbs, lexicon.glosses(), nullptr, nullptr});
+
+    TimelineSources sources() const {
+        TimelineSources s;
+        s.lexicon = &lexicon;
+        s.shapes = &shapes;
+        s.verbs = [this](const std::string& verb, VerbVersion version, double subject, double object, int, int) {
+            return synthesizeVerb(VerbSources{&verbs, &models, kSource + "/scenes/animator"}, verb, version, subject, object);
+        };
+        return s;
+    }
+};
+
+const World& world() {
+    static const World w;
+    return w;
+}
+
+const std::array<VerbVersion, 4> kVersions{VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator,
+                                           VerbVersion::Uninflected};
+
+// What a hand does at t, as plain numbers: identical samples give identical frames.
+std::string handState(const std::vector<TimelineKey>& track, double t) {
+    const TimelineSample s = sampleTrack(track, t);
+    char text[512];
+    auto pose = [](const TimelineKey& k) {
+        char p[200];
+        if (k.rest) return std::string("rest");
+        std::snprintf(p, sizeof p, "%.17g,%.17g,%.17g|%.17g,%.17g,%.17g,%.17g|%s", k.pose.positionMm.x, k.pose.positionMm.y,
+                      k.pose.positionMm.z, k.pose.orientation.w, k.pose.orientation.x, k.pose.orientation.y,
+                      k.pose.orientation.z, k.handshape.c_str());
+        return std::string(p);
+    };
+    std::snprintf(text, sizeof text, "%s -> %s @ %.17g", pose(*s.from).c_str(), pose(*s.to).c_str(), s.blend);
+    return text;
+}
+
+std::string gazeState(const std::vector<GazeKey>& gaze, double t) {
+    const GazeSample s = sampleGaze(gaze, t);
+    auto target = [](const GazeKey& k) {
+        if (!k.targetMm) return std::string("viewer");
+        char p[120];
+        std::snprintf(p, sizeof p, "%.17g,%.17g,%.17g", k.targetMm->x, k.targetMm->y, k.targetMm->z);
+        return std::string(p);
+    };
+    return target(*s.from) + " -> " + target(*s.to) + " @ " + std::to_string(s.blend);
+}
+
+bool insideVerb(const Timeline& timeline, double t) {
+    for (const TimelineSpan& span : timeline.spans)
+        if (span.kind == SpanKind::Verb && t > span.startSeconds - 1e-9 && t < span.endSeconds + 1e-9) return true;
+    return false;
+}
+
+TEST(Timeline, EveryFrameOutsideTheVerbSlotsIsIdenticalInTheFourVersions) {
+    std::vector<Timeline> timelines;
+    for (VerbVersion v : kVersions) timelines.push_back(buildTimeline(world().story, v, world().sources()));
+    const Timeline& first = timelines.front();
+    int compared = 0, insideSlots = 0, differingInside = 0;
+    for (const Timeline& other : timelines) {
+        ASSERT_EQ(other.durationSeconds, first.durationSeconds);
+        ASSERT_EQ(other.spans.size(), first.spans.size());
+        for (std::size_t i = 0; i < first.spans.size(); ++i) {
+            EXPECT_EQ(other.spans[i].startSeconds, first.spans[i].startSeconds) << i;
+            EXPECT_EQ(other.spans[i].endSeconds, first.spans[i].endSeconds) << i;
+        }
+    }
+    for (int frame = 0; frame / 30.0 <= first.durationSeconds; ++frame) {
+        const double t = frame / 30.0;
+        if (insideVerb(first, t)) {
+            ++insideSlots;
+            differingInside += handState(timelines[0].right, t) != handState(timelines[3].right, t);
+            continue;
+        }
+        for (const Timeline& other : timelines) {
+            EXPECT_EQ(handState(other.right, t), handState(first.right, t)) << other.version << " at " << t;
+            EXPECT_EQ(handState(other.left, t), handState(first.left, t)) << other.version << " at " << t;
+            EXPECT_EQ(gazeState(other.gaze, t), gazeState(first.gaze, t)) << other.version << " at " << t;
+        }
+        ++compared;
+    }
+    EXPECT_GT(compared, 60);
+    EXPECT_GT(insideSlots, 20);
+    EXPECT_GT(differingInside, 5) << "point and uninflected should differ inside the verb slots";
+}
+
+TEST(Timeline, StartsAndEndsAtRestWithTimesIncreasing) {
+    const Timeline t = buildTimeline(world().story, VerbVersion::Animator, world().sources());
+    for (const auto* track : {&t.right, &t.left}) {
+        EXPECT_TRUE(track->front().rest);
+        EXPECT_TRUE(track->back().rest);
+        EXPECT_EQ(track->front().timeSeconds, 0.0);
+        EXPECT_DOUBLE_EQ(track->back().timeSeconds, t.durationSeconds);
+        for (std::size_t i = 1; i < track->size(); ++i) EXPECT_GE((*track)[i].timeSeconds, (*track)[i - 1].timeSeconds);
+    }
+    for (std::size_t i = 1; i < t.gaze.size(); ++i) EXPECT_GT(t.gaze[i].timeSeconds, t.gaze[i - 1].timeSeconds);
+}
+
+// Position of a non-resting sample; the rest place is the signer's, so samples touching rest
+// are skipped.
+std::optional<glm::dvec3> position(const std::vector<TimelineKey>& track, double t) {
+    const TimelineSample s = sampleTrack(track, t);
+    if (s.from->rest || s.to->rest) return std::nullopt;
+    return s.from->pose.positionMm + s.blend * (s.to->pose.positionMm - s.from->pose.positionMm);
+}
+
+TEST(Timeline, HandsMoveWithoutJumpsAndStopSmoothlyAtKeys) {
+    for (VerbVersion v : kVersions) {
+        const Timeline t = buildTimeline(world().story, v, world().sources());
+        const double dt = 0.001;
+        double fastest = 0.0;
+        for (double time = 0.0; time + dt <= t.durationSeconds; time += dt) {
+            const auto a = position(t.right, time), b = position(t.right, time + dt);
+            if (a && b) fastest = std::max(fastest, glm::length(*b - *a) / dt);
+        }
+        // Fluent signing peaks near 2-3 m/s; a jump between keys would be far above.
+        EXPECT_LT(fastest, 4000.0) << toString(v) << " mm/s";
+        // Minimum jerk: zero velocity at every key.
+        EXPECT_NEAR(minimumJerk(1e-4) / 1e-4, 0.0, 1e-5);
+        EXPECT_NEAR((1.0 - minimumJerk(1.0 - 1e-4)) / 1e-4, 0.0, 1e-5);
+    }
+}
+
+TEST(Timeline, FingerspelledLettersAreEachHeld) {
+    const Timeline t = buildTimeline(world().story, VerbVersion::Point, world().sources());
+    const TimelineSpan* ann = nullptr;
+    for (const TimelineSpan& s : t.spans)
+        if (s.label == "fs-ANN") ann = &s;
+    ASSERT_NE(ann, nullptr);
+    std::vector<std::string> held;
+    for (std::size_t i = 1; i < t.right.size(); ++i) {
+        const TimelineKey &a = t.right[i - 1], &b = t.right[i];
+        if (a.timeSeconds >= ann->startSeconds - 1e-9 && b.timeSeconds <= ann->endSeconds + 1e-9 && !a.rest &&
+            a.handshape == b.handshape && a.pose.positionMm == b.pose.positionMm) {
+            held.push_back(a.handshape);
+            EXPECT_NEAR(b.timeSeconds - a.timeSeconds, TimelineOptions{}.letterSeconds, 1e-9);
+        }
+    }
+    EXPECT_EQ(held, (std::vector<std::string>{"A", "N", "N"}));
+    // The doubled N slides to the signer's right.
+    double firstN = 0.0, secondN = 0.0;
+    for (const TimelineKey& k : t.right)
+        if (k.timeSeconds >= ann->startSeconds && k.timeSeconds <= ann->endSeconds && k.handshape == "N")
+            (firstN == 0.0 ? firstN : secondN) = k.pose.positionMm.x, firstN = firstN == 0.0 ? k.pose.positionMm.x : firstN;
+    EXPECT_GT(secondN, firstN);
+}
+
+TEST(Timeline, GazeFollowsPointingAndTheVerbsObjectAndReturnsToTheViewer) {
+    const Timeline t = buildTimeline(world().story, VerbVersion::Vector, world().sources());
+    auto targetAt = [&](double time) {
+        const GazeSample s = sampleGaze(t.gaze, time);
+        return s.blend < 0.5 ? s.from->targetMm : s.to->targetMm;
+    };
+    int checked = 0;
+    for (const TimelineSpan& span : t.spans) {
+        const double middle = 0.5 * (span.startSeconds + span.endSeconds) + 0.05;
+        if (span.kind == SpanKind::Pointing && span.sentence == 0) {
+            ASSERT_TRUE(targetAt(middle));
+            EXPECT_NEAR(glm::length(*targetAt(middle) - arcPoint(0.9)), 0.0, 1e-9);
+            ++checked;
+        }
+        if (span.kind == SpanKind::Verb && span.label == "ASK") {
+            ASSERT_TRUE(targetAt(middle));
+            EXPECT_NEAR(glm::length(*targetAt(middle) - arcPoint(-0.6)), 0.0, 1e-9);
+            ++checked;
+        }
+        if (span.kind == SpanKind::Sign && span.label == "MY") {
+            EXPECT_FALSE(targetAt(span.endSeconds - 0.01)) << "looks at the viewer while signing MY";
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 4);
+}
+
+TEST(Timeline, ASignMissingFromTheLexiconIsNamedAtItsLineAndColumn) {
+    Lexicon small = world().lexicon;
+    small.signs.erase(small.signs.begin());  // no MY
+    TimelineSources sources = world().sources();
+    sources.lexicon = &small;
+    try {
+        buildTimeline(world().story, VerbVersion::Point, sources);
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), "test-story.json");
+        EXPECT_EQ(e.line(), 5);
+        EXPECT_EQ(e.column(), 19);
+        EXPECT_NE(std::string(e.what()).find("has no sign MY"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Timeline, JsonIsTheSameForTheSameInputs) {
+    const std::string a = formatTimelineJson(buildTimeline(world().story, VerbVersion::Point, world().sources()));
+    const std::string b = formatTimelineJson(buildTimeline(world().story, VerbVersion::Point, world().sources()));
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(a.find("nan"), std::string::npos);
+    EXPECT_NE(a.find("\"kind\": \"verb\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace signstim::stimuli
