@@ -1,6 +1,7 @@
 #include "stimuli/handshapes.hpp"
 
 #include "common/error.hpp"
+#include "common/number_format.hpp"
 #include "stimuli/json_source.hpp"
 #include "stimuli/scenes_path.hpp"
 
@@ -34,6 +35,8 @@ public:
             if (!known.count(key)) fail({jsonKey(key)}, key, "unknown key (expected one of format, version, about, fingerPresets, thumbPresets, handshapes)");
             (void)value;
         }
+        if (const auto format = root.find("format"); format != root.end() && *format != "signstim-handshapes")
+            fail({"\"format\""}, "format", "expected \"signstim-handshapes\", got " + format->dump() + " (a file of another kind?)");
         // Version 2: thumbs for the spin-free thumb swing (docs/hand.md). Version 1 thumbs were
         // tuned for SPEC §1.4's literal chain and would now be rolled by θ.
         // A file without "version" predates the field being checked: it is a version 1 file.
@@ -79,12 +82,7 @@ private:
                  float minimum, float maximum) const {
         if (!value.is_number()) fail(anchors, field, "must be a number, got " + std::string(value.type_name()));
         const double v = value.get<double>();
-        if (!std::isfinite(v)) fail(anchors, field, "must be finite");
-        if (v < minimum || v > maximum) {
-            std::ostringstream message;
-            message << "out of range: " << v << " not in [" << minimum << ", " << maximum << "]";
-            fail(anchors, field, message.str());
-        }
+        if (!(v >= minimum && v <= maximum)) fail(anchors, field, "out of range: " + rangeMessage(minimum, maximum, "", v));
         return static_cast<float>(v);
     }
 
@@ -278,7 +276,7 @@ const Handshape& HandshapeLibrary::at(std::string_view name) const {
 HandshapeLibrary parseHandshapes(const std::string& text, const std::string& fileName,
                                  const hand::HandModel& model) {
     const JsonSource source = parseJsonText(text, fileName);
-    return Parser(source, model).parse();
+    return withJsonErrors(source, [&] { return Parser(source, model).parse(); });
 }
 
 std::filesystem::path handshapesFile(const std::filesystem::path& explicitFile,
@@ -288,7 +286,7 @@ std::filesystem::path handshapesFile(const std::filesystem::path& explicitFile,
 
 HandshapeLibrary loadHandshapes(const std::filesystem::path& file, const hand::HandModel& model) {
     const JsonSource source = readJsonFile(file);
-    return Parser(source, model).parse();
+    return withJsonErrors(source, [&] { return Parser(source, model).parse(); });
 }
 
 }  // namespace signstim::stimuli
