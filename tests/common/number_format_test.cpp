@@ -12,6 +12,10 @@ TEST(NumberFormat, ShortestTextThatReadsBackTheSameDouble) {
     EXPECT_EQ(formatNumber(-2000.0), "-2000");
     EXPECT_EQ(formatNumber(1e308), "1e+308");
     EXPECT_EQ(formatNumber(-0.0), "0");
+    EXPECT_EQ(formatNumber(1e9), "1000000000");  // everyday magnitudes in plain notation
+    EXPECT_EQ(formatNumber(-1e5), "-100000");
+    EXPECT_EQ(formatNumber(0.00012), "0.00012");
+    EXPECT_EQ(formatNumber(1e-300), "1e-300");
     EXPECT_EQ(std::stod(formatNumber(0.1 + 0.2)), 0.1 + 0.2);
 }
 
