@@ -44,6 +44,9 @@ double parseNumber(std::string_view cell, const std::string& file, int line, std
     double value = 0.0;
     const char* end = cell.data() + cell.size();
     const auto [ptr, ec] = std::from_chars(cell.data(), end, value);
+    if (ec == std::errc::result_out_of_range && ptr == end) {
+        throw InputError(file, line, std::string(column), "'" + std::string(cell) + "' is out of the range of a double");
+    }
     if (cell.empty() || ec != std::errc() || ptr != end) {
         throw InputError(file, line, std::string(column), "not a number: '" + std::string(cell) + "'");
     }

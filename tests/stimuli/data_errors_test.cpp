@@ -15,6 +15,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -248,6 +250,24 @@ TEST(DataRanges, HugeCorpusValuesAreRefused) {
     EXPECT_EQ(e.line(), 2);
     EXPECT_EQ(e.field(), "z");
     EXPECT_NE(e.detail().find("expected -2000 to 2000 mm"), std::string::npos) << e.what();
+}
+
+TEST(DataRanges, AVerbWhosePassesLastMoreThanAMinuteIsRefused) {
+    const std::string text = replaced(verbsText(), "\"passes\": 3", "\"passes\": 20");
+    std::string longer = text;
+    // SCOLD's last keyframe at 0.18 s: 20 passes are 3.6 s, fine; at 3.5 s they are 70 s.
+    const VerbLibrary fine = parseVerbLibrary(parseJsonText(text, "verbs.json"));
+    EXPECT_EQ(fine.find("SCOLD")->passes, 20);
+    const double last = fine.find("SCOLD")->citation[0].back().timeSeconds;
+    char from[32];
+    std::snprintf(from, sizeof from, "\"time\": %g", last);
+    const std::size_t scold = longer.find("\"SCOLD\"");
+    const std::size_t at = longer.find(from, scold);
+    ASSERT_NE(at, std::string::npos) << from;
+    longer.replace(at, std::strlen(from), "\"time\": 3.5");
+    const InputError e = errorOf([&] { parseVerbLibrary(parseJsonText(longer, "verbs.json")); });
+    EXPECT_EQ(e.line(), lineOfText(longer, "\"passes\": 20"));
+    EXPECT_NE(e.detail().find("lasts 70 s in all"), std::string::npos) << e.what();
 }
 
 // ---- 5. train validates before writing -------------------------------------------------------
