@@ -73,8 +73,35 @@ public:
     }
 
 private:
+    // The line is that of the JSON pointer the anchors spell (keys, and "name": "X" for the
+    // handshape named X), recorded while parsing, so it is right whatever the key order and
+    // layout; text anchors where they spell no recorded value.
     [[noreturn]] void fail(const std::vector<std::string>& anchors, const std::string& field,
                            const std::string& message) const {
+        std::string pointer;
+        bool spelled = true;
+        for (const std::string& anchor : anchors) {
+            const bool quoted = anchor.size() >= 2 && anchor.front() == '"' && anchor.back() == '"';
+            if (quoted && anchor.find('"', 1) == anchor.size() - 1) {
+                pointer += "/" + jsonPointerToken(anchor.substr(1, anchor.size() - 2));
+                continue;
+            }
+            const std::string prefix = "\"name\": \"";
+            spelled = quoted && anchor.rfind(prefix, 0) == 0 && pointer == "/handshapes" && source_.root.is_object();
+            if (!spelled) break;
+            spelled = false;
+            const std::string name = anchor.substr(prefix.size(), anchor.size() - prefix.size() - 1);
+            const auto list = source_.root.find("handshapes");
+            if (list == source_.root.end() || !list->is_array()) break;
+            const json& shapes = *list;
+            std::size_t index = 0;
+            while (index < shapes.size() && !(shapes[index].is_object() && shapes[index].value("name", json()) == name)) ++index;
+            spelled = index < shapes.size();
+            if (!spelled) break;
+            pointer += "/" + std::to_string(index);
+        }
+        if (spelled && !pointer.empty() && source_.lines.count(pointer))
+            throw InputError(source_.file, source_.lineAt(pointer), field, message);
         source_.fail(anchors, field, message);
     }
 

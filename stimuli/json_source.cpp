@@ -196,14 +196,51 @@ std::string_view withoutByteOrderMark(std::string_view text) {
     return text;
 }
 
+namespace {
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+// Where `anchor` occurs in `text` at or after `from`, a space in the anchor matching any run of
+// white space, also none ("\"name\": \"A\"" finds "\"name\":\"A\"" of a compact file);
+// `end` is set past the match. npos when absent.
+std::size_t findLoosely(const std::string& text, const std::string& anchor, std::size_t from, std::size_t& end) {
+    std::vector<std::string> pieces;
+    std::size_t start = 0;
+    while (start <= anchor.size()) {
+        const std::size_t space = anchor.find(' ', start);
+        const std::string piece = anchor.substr(start, space == std::string::npos ? std::string::npos : space - start);
+        if (!piece.empty()) pieces.push_back(piece);
+        if (space == std::string::npos) break;
+        start = space + 1;
+    }
+    if (pieces.empty()) return std::string::npos;
+    for (std::size_t at = text.find(pieces[0], from); at != std::string::npos; at = text.find(pieces[0], at + 1)) {
+        std::size_t position = at + pieces[0].size();
+        bool matched = true;
+        for (std::size_t i = 1; i < pieces.size() && matched; ++i) {
+            while (position < text.size() && isSpace(text[position])) ++position;
+            matched = text.compare(position, pieces[i].size(), pieces[i]) == 0;
+            position += pieces[i].size();
+        }
+        if (matched) {
+            end = position;
+            return at;
+        }
+    }
+    return std::string::npos;
+}
+
+}  // namespace
+
 int JsonSource::lineOf(const std::vector<std::string>& anchors) const {
     std::size_t position = 0;
     std::size_t found = std::string::npos;
     for (const std::string& anchor : anchors) {
-        const std::size_t at = text.find(anchor, position);
+        std::size_t end = 0;
+        const std::size_t at = findLoosely(text, anchor, position, end);
         if (at == std::string::npos) break;
         found = at;
-        position = at + anchor.size();
+        position = end;
     }
     if (found == std::string::npos) return 0;
     return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(found), '\n'));

@@ -33,8 +33,11 @@ Vector3Polynomial fitVector3(const PolynomialBasis& basis, const std::vector<Sam
 }
 
 // 10 significant digits: far below any measurement, and stable against last-bit differences.
+// A value that is not finite is kept (written as null), so that formatCheckedVerbModels refuses
+// it rather than a 0 standing in for it unseen.
 double rounded(double value) {
-    if (value == 0.0 || !std::isfinite(value)) return 0.0;
+    if (!std::isfinite(value)) return value;
+    if (value == 0.0) return 0.0;
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.10g", value);
     const double result = std::strtod(buffer, nullptr);

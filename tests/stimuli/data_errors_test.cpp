@@ -281,6 +281,9 @@ TEST(TrainValidation, ModelsThatWouldNotLoadBackAreRefusedBeforeWriting) {
     EXPECT_EQ(e.file(), "corpus.csv");
     EXPECT_NE(e.detail().find("out.json is not written"), std::string::npos) << e.what();
     EXPECT_NE(e.detail().find("got 1e+200"), std::string::npos) << e.what();
+    // A coefficient that is not finite is refused, not written as 0 or null.
+    models.verbs.front().point.position[0][0].y.coefficients[3] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(formatCheckedVerbModels(models, verbs(), "out.json"), InputError);
 }
 
 // ---- 6. Enough digits ------------------------------------------------------------------------
@@ -343,6 +346,20 @@ TEST(LineNumbers, EveryReaderNamesTheLineOfTheError) {
     {
         const std::string text = replaced(shapesText(), "\"hook\": 0", "\"hook\": 7");
         EXPECT_EQ(errorOf([&] { parseHandshapes(text, "h.json", handModel()); }).line(), lineOfText(text, "\"hook\": 7"));
+    }
+    // handshapes written compactly, one shape per line: the line is still that of the shape
+    {
+        nlohmann::json shapes = nlohmann::json::parse(shapesText());
+        shapes["handshapes"][3]["fingers"]["ring"] = "no-such-preset";
+        std::string text = "{\n";
+        for (const auto& [key, value] : shapes.items())
+            if (key != "handshapes") text += "\"" + key + "\":" + value.dump() + ",\n";
+        text += "\"handshapes\":[\n";
+        for (std::size_t i = 0; i < shapes["handshapes"].size(); ++i)
+            text += shapes["handshapes"][i].dump() + (i + 1 < shapes["handshapes"].size() ? ",\n" : "\n");
+        text += "]}\n";
+        const InputError e = errorOf([&] { parseHandshapes(text, "h.json", handModel()); });
+        EXPECT_EQ(e.line(), lineOfText(text, "no-such-preset")) << e.what();
     }
     // verbs: the second keyframe's fingers of GIVE
     {
