@@ -1,5 +1,7 @@
 #include "app/signer_pose.hpp"
 
+#include "stimuli/json_source.hpp"
+
 #include "common/error.hpp"
 #include "renderer/gltf_loader.hpp"
 
@@ -11,9 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
-#include <sstream>
 
 namespace signstim::app {
 namespace {
@@ -83,27 +83,18 @@ const std::vector<std::string>& requiredSignerBones() {
 }
 
 BoneMapping loadBoneMapping(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    if (!in) throw InputError(file.string(), 0, "", "cannot read the bone mapping file");
-    std::stringstream text;
-    text << in.rdbuf();
-    nlohmann::json json;
-    try {
-        json = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& e) {
-        // nlohmann reports a byte offset; turn it into a line.
-        const std::string s = text.str();
-        const auto offset = std::min<std::size_t>(e.byte, s.size());
-        const int line = 1 + static_cast<int>(std::count(s.begin(), s.begin() + static_cast<long>(offset), '\n'));
-        throw InputError(file.string(), line, "", std::string("not valid JSON: ") + e.what());
-    }
-    const nlohmann::json& object = json.contains("bones") ? json["bones"] : json;
-    if (!object.is_object())
-        throw InputError(file.string(), 0, "bones", "expected an object {\"vrmBoneName\": \"nodeName\"}");
+    // The shared JSON reader: not-a-regular-file, parse errors, duplicate keys and a BOM are
+    // handled as in every data file, and each mistake names its line.
+    const stimuli::JsonSource source = stimuli::readJsonFile(file);
+    const nlohmann::json& json = source.root;
+    const bool nested = json.is_object() && json.contains("bones");
+    const std::string base = nested ? "/bones" : "";
+    const nlohmann::json& object = nested ? json["bones"] : json;
+    if (!object.is_object()) source.failAt(base, "expected an object {\"vrmBoneName\": \"nodeName\"}");
     BoneMapping mapping;
     for (const auto& [vrm, node] : object.items()) {
-        if (!node.is_string())
-            throw InputError(file.string(), 0, vrm, "expected the node name as a string");
+        const std::string pointer = base + "/" + stimuli::jsonPointerToken(vrm);
+        if (!node.is_string()) throw InputError(file.string(), source.lineAt(pointer), vrm, "expected the node name as a string");
         mapping[vrm] = node.get<std::string>();
     }
     return mapping;

@@ -119,6 +119,13 @@ TEST(DataErrorsCli, AFifoAsInputExitsTwoAtOnce) {
     fs::remove_all(dir);
 }
 
+TEST(DataErrorsCli, AFailedReadExitsThree) {
+    // read() of /proc/self/mem fails with EIO: the system's fault, not the user's.
+    const CommandResult r = runSignstim("hand shapes --shapes /proc/self/mem");
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find("Input/output error"), std::string::npos) << r.output;
+}
+
 TEST(DataErrorsCli, AHugeSensorSampleExitsTwoAndWritesNothing) {
     const fs::path dir = scratchDir("sensor");
     std::string samples = "time,sensor,x,y,z,azimuth,elevation,roll\n";

@@ -429,6 +429,17 @@ TEST(FileKinds, WhatIsNotARegularFileIsRefusedSayingWhatItIs) {
     EXPECT_THROW(loadSensorSamples("/dev/zero"), InputError);
 }
 
+TEST(FileKinds, AReadThatFailsWithAnIoErrorIsAnIoError) {
+    // /proc/self/mem is a regular file whose first page is unmapped: read() fails with EIO,
+    // whoever runs the test (root included).
+    try {
+        readTextFile("/proc/self/mem");
+        ADD_FAILURE() << "no error";
+    } catch (const IoError& e) {
+        EXPECT_NE(std::string(e.what()).find("/proc/self/mem: cannot read: Input/output error"), std::string::npos) << e.what();
+    }
+}
+
 TEST(FileKinds, AFileTheSystemRefusesToReadIsAnIoError) {
     if (::geteuid() == 0) GTEST_SKIP() << "root reads files whatever their permissions";
     const fs::path locked = writeFile("locked.json", "{}");
