@@ -262,7 +262,9 @@ VerbPerformance parseAnimatorPerformance(const JsonSource& source, const VerbDef
     const auto positionMatches = [&](const char* key, double expected) {
         if (!root.contains(key) || !root[key].is_number() || std::abs(root[key].get<double>() - expected) > 1e-6)
             source.fail({std::string("\"") + key + "\""}, std::string("/") + key,
-                        std::string("expected ") + key + " " + positionText(expected) + " (the file name says so)");
+                        std::string("expected ") + key + " " + positionText(expected) + " (the file name says so)" +
+                            (root.contains(key) && root[key].is_number() ? ", got " + formatNumber(root[key].get<double>())
+                                                                          : std::string()));
     };
     if (!verb.objectOnly()) positionMatches("subject", subject);
     positionMatches("object", object);
