@@ -1,8 +1,9 @@
 #include "app/cli_values.hpp"
 
+#include "common/number_format.hpp"
+
 #include <charconv>
 #include <cmath>
-#include <sstream>
 #include <string_view>
 
 namespace signstim::app {
@@ -137,10 +138,9 @@ std::uint32_t requireSampleCount(std::uint32_t count, const std::string& flag) {
 
 double requireInRange(double value, double minimum, double maximum, const std::string& flag, const std::string& unit) {
     if (!(value >= minimum && value <= maximum)) {
-        std::ostringstream range, given;
-        range << "expected " << minimum << " to " << maximum << (unit.empty() ? "" : " ") << unit;
-        given << value;
-        throw commandLineError(flag, range.str() + got(given.str()));
+        // formatNumber: enough digits to show why 1.0000001 is past a limit of 1.
+        throw commandLineError(flag, "expected " + formatNumber(minimum) + " to " + formatNumber(maximum) +
+                                         (unit.empty() ? "" : " ") + unit + got(formatNumber(value)));
     }
     return value;
 }

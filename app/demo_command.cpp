@@ -89,7 +89,7 @@ void runDemo(const DemoOptions& o) {
     const stimuli::HandshapeLibrary& shapes = signer.shapes();
     const stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(scenes / "verbs.json");
     const stimuli::TrainedVerbModels models = stimuli::loadVerbModels(scenes / "models" / "verb_models.json", verbs);
-    const stimuli::VerbSources sources{&verbs, &models, scenes / "animator"};
+    const stimuli::VerbSources sources{&verbs, &models, scenes / "animator", &shapes};  // unknown handshapes name their file
 
     std::vector<const stimuli::VerbDefinition*> chosen;
     if (o.verbs.empty())

@@ -68,6 +68,16 @@ void runPose(const HandOptions& o) {
     const stimuli::Handshape& shape = library(o, model).at(o.shape);
     const hand::Side side = o.side == "left" ? hand::Side::Left : hand::Side::Right;
     const hand::HandPose pose = hand::forwardKinematics(model, shape.controls, side);
+    // Never print a non-finite number (JSON would say null): the controls are range-checked on
+    // load, so this is a guard, and it names the shape and file.
+    const auto finite = [](const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+    bool allFinite = true;
+    for (const hand::RigidTransform& body : pose.bodies)
+        allFinite = allFinite && finite(body.position) && std::isfinite(body.rotation.w) && finite({body.rotation.x, body.rotation.y, body.rotation.z});
+    for (const glm::vec3& tip : pose.tips) allFinite = allFinite && finite(tip);
+    if (!allFinite)
+        throw InputError(stimuli::handshapesFile(o.shapesFile, o.scenesDir).string(), 0, "handshape '" + shape.name + "'",
+                         "the pose of this shape is not finite; nothing is printed");
     if (o.json) {
         nlohmann::json out;
         out["side"] = o.side;
@@ -113,6 +123,7 @@ void runFromSensors(const HandOptions& o) {
     std::vector<hand::SensorHandFrame> frames;
     frames.reserve(samples.size());
     for (const stimuli::SensorSample& s : samples) frames.push_back(hand::sensorHand(calibration, s.readings));
+    stimuli::checkSensorHandFinite(samples, frames, o.samples);
     const std::string text = extension == ".json"
                                  ? stimuli::formatSensorHandJson(calibration.side, samples, frames)
                                  : stimuli::formatSensorHandCsv(calibration.side, samples, frames);

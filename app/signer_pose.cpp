@@ -1,5 +1,7 @@
 #include "app/signer_pose.hpp"
 
+#include "stimuli/json_source.hpp"
+
 #include "common/error.hpp"
 #include "renderer/gltf_loader.hpp"
 
@@ -10,11 +12,8 @@
 #include <glm/mat3x3.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <fstream>
 #include <functional>
-#include <sstream>
 
 namespace signstim::app {
 namespace {
@@ -64,18 +63,6 @@ bool isKnownBoneName(const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// 1-based line of the first `"key":` in `text` (0 when not found).
-int lineOfKey(const std::string& text, const std::string& key) {
-    const std::string quoted = nlohmann::json(key).dump();
-    for (std::size_t at = text.find(quoted); at != std::string::npos; at = text.find(quoted, at + 1)) {
-        std::size_t after = at + quoted.size();
-        while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
-        if (after < text.size() && text[after] == ':')
-            return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
-    }
-    return 0;
-}
-
 // The shortest rotation taking direction a onto direction b.
 glm::quat swingBetween(glm::vec3 a, glm::vec3 b) {
     a = glm::normalize(a);
@@ -116,35 +103,25 @@ const std::vector<std::string>& requiredSignerBones() {
 }
 
 BoneMapping loadBoneMapping(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    if (!in) throw InputError(file.string(), 0, "", "cannot read the bone mapping file");
-    std::stringstream text;
-    text << in.rdbuf();
-    nlohmann::json json;
-    try {
-        json = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& e) {
-        // nlohmann reports a byte offset; turn it into a line.
-        const std::string s = text.str();
-        const auto offset = std::min<std::size_t>(e.byte, s.size());
-        const int line = 1 + static_cast<int>(std::count(s.begin(), s.begin() + static_cast<long>(offset), '\n'));
-        throw InputError(file.string(), line, "", std::string("not valid JSON: ") + e.what());
-    }
+    // The shared JSON reader: not-a-regular-file, parse errors, duplicate keys and a BOM are
+    // handled as in every data file, and each mistake names its line.
+    const stimuli::JsonSource source = stimuli::readJsonFile(file);
+    const nlohmann::json& json = source.root;
     BoneMapping mapping;
     mapping.file = file.string();
     mapping.pointer = json.is_object() && json.contains("bones") ? "/bones" : "";
     const nlohmann::json& object = mapping.pointer.empty() ? json : json["bones"];
     if (!object.is_object())
-        throw InputError(mapping.file, 0, mapping.pointer,
+        throw InputError(mapping.file, source.lineAt(mapping.pointer), mapping.pointer,
                          (mapping.pointer.empty() ? "the top level: " : "") +
                              std::string("expected an object {\"vrmBoneName\": \"nodeName\"}"));
     for (const auto& [vrm, node] : object.items()) {
-        const int line = lineOfKey(text.str(), vrm);
+        const std::string pointer = mapping.pointer + "/" + stimuli::jsonPointerToken(vrm);
+        const int line = source.lineAt(pointer);
         if (!isKnownBoneName(vrm))
-            throw InputError(mapping.file, line, mapping.pointer + "/" + vrm,
+            throw InputError(mapping.file, line, pointer,
                              "'" + vrm + "' is not a VRM humanoid bone name (e.g. leftUpperArm, rightIndexProximal)");
-        if (!node.is_string())
-            throw InputError(mapping.file, line, mapping.pointer + "/" + vrm, "expected the node name as a string");
+        if (!node.is_string()) throw InputError(mapping.file, line, pointer, "expected the node name as a string");
         mapping.nodes[vrm] = node.get<std::string>();
         mapping.lines[vrm] = line;
     }

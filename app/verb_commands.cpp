@@ -140,8 +140,9 @@ void registerVerbCommands(Commands& commands) {
             const Corpus corpus = loadCorpus(o->corpusFile, verbs);
             ModelOptions options;
             options.degree = o->degree;
+            for (const std::string& warning : corpus.warnings) std::fprintf(stderr, "signstim: warning: %s\n", warning.c_str());
             const TrainedVerbModels models = trainVerbModels(corpus, verbs, options);
-            writeFileAtomic(o->outPath, formatVerbModels(models));
+            writeFileAtomic(o->outPath, formatCheckedVerbModels(models, verbs, o->outPath));
             std::printf("trained %zu verbs on %zu examples -> %s\n", models.verbs.size(), corpus.examples.size(),
                         o->outPath.c_str());
         });
@@ -197,7 +198,10 @@ void registerVerbCommands(Commands& commands) {
                 models = loadVerbModels(o->modelsFile.empty() ? scenesDir / "models" / "verb_models.json"
                                                               : std::filesystem::path(o->modelsFile),
                                         verbs);
-            const VerbSources sources{&verbs, &models, scenesDir / "animator"};
+            // Every handshape the verb names is checked here, against the file the signer uses,
+            // so an unknown one is blamed on the verbs or animator file that names it.
+            const HandshapeLibrary handshapes = loadHandshapes(scenesDir / "handshapes.json", hand::buildHandModel());
+            const VerbSources sources{&verbs, &models, scenesDir / "animator", &handshapes};
             const VerbPerformance performance = synthesizeVerb(sources, definition.name, *version, o->subject, o->object);
             if (!o->outPath.empty()) renderVerb(*o, scenesDir, performance);
             else if (o->json) std::fputs(formatPerformanceJson(performance).c_str(), stdout);
@@ -219,6 +223,7 @@ void registerVerbCommands(Commands& commands) {
         evaluate->callback([o] {
             const VerbLibrary verbs = verbLibrary(*o);
             const Corpus corpus = loadCorpus(o->corpusFile, verbs);
+            for (const std::string& warning : corpus.warnings) std::fprintf(stderr, "signstim: warning: %s\n", warning.c_str());
             std::fputs(formatEvaluationTable(evaluateVerbModels(corpus, verbs)).c_str(), stdout);
         });
     }

@@ -1,5 +1,6 @@
 #include "stimuli/corpus.hpp"
 
+#include "common/number_format.hpp"
 #include "stimuli/signing_space.hpp"
 #include "stimuli/sora.hpp"
 
@@ -79,6 +80,7 @@ std::vector<const CorpusExample*> Corpus::examplesOf(std::string_view verb) cons
 }
 
 Corpus parseCorpus(std::string_view text, const std::string& fileName, const VerbLibrary& verbs) {
+    text = withoutByteOrderMark(text);
     Corpus corpus;
     corpus.sourceFile = fileName;
     std::array<int, kColumns.size()> columnOf{};
@@ -123,9 +125,10 @@ Corpus parseCorpus(std::string_view text, const std::string& fileName, const Ver
             headerWidth = cells.size();
             continue;
         }
-        if (cells.size() < headerWidth)
-            throw InputError(fileName, lineNumber, kColumns[0],
-                             "the row has " + std::to_string(cells.size()) + " fields, the header " + std::to_string(headerWidth));
+        if (cells.size() != headerWidth)
+            throw InputError(fileName, lineNumber, "",
+                             "the row has " + std::to_string(cells.size()) + " fields, the header " +
+                                 std::to_string(headerWidth) + (cells.size() > headerWidth ? " (a comma inside a value?)" : ""));
         const auto cell = [&](std::size_t k) -> const std::string& { return cells[static_cast<std::size_t>(columnOf[k])]; };
         const auto number = [&](std::size_t k) {
             double value = 0.0;
@@ -166,8 +169,15 @@ Corpus parseCorpus(std::string_view text, const std::string& fileName, const Ver
             throw InputError(fileName, lineNumber, "keyframe",
                              verb.name + " has keyframes 0.." + std::to_string(verb.keyframeCount() - 1) +
                                  " (scenes/verbs.json); add keyframes there to train more");
-        const glm::dvec3 positionMm(number(6), number(7), number(8));
-        const glm::dquat orientation = rollPitchYawDegreesToQuaternion(number(9), number(10), number(11));
+        const auto inRange = [&](std::size_t k, const NumberRange& range) {
+            const double value = number(k);
+            checkInRange(value, range, fileName, lineNumber, kColumns[k]);
+            return value;
+        };
+        const glm::dvec3 positionMm(inRange(6, kSigningSpacePositionRange), inRange(7, kSigningSpacePositionRange),
+                                    inRange(8, kSigningSpacePositionRange));
+        const glm::dquat orientation = rollPitchYawDegreesToQuaternion(
+            inRange(9, kAngleDegreesRange), inRange(10, kAngleDegreesRange), inRange(11, kAngleDegreesRange));
 
         PartialExample& entry = partial[{verb.name, exampleNumber}];
         if (entry.lines.empty()) {
@@ -208,7 +218,46 @@ Corpus parseCorpus(std::string_view text, const std::string& fileName, const Ver
         }
     }
     if (corpus.examples.empty()) throw InputError(fileName, 0, "", "the corpus has no examples");
+    const bool cutShort = !text.empty() && text.back() != '\n';
+    corpus.warnings = designWarnings(corpus, verbs, cutShort);
     return corpus;
+}
+
+std::vector<std::string> designWarnings(const Corpus& corpus, const VerbLibrary& verbs, bool lastLineUnterminated) {
+    std::vector<std::string> warnings;
+    const auto text = [](double p) { return formatNumber(p); };
+    for (const VerbDefinition& verb : verbs.verbs) {
+        const std::vector<const CorpusExample*> examples = corpus.examplesOf(verb.name);
+        if (examples.empty()) continue;
+        const auto has = [&](double subject, double object) {
+            for (const CorpusExample* e : examples)
+                if (std::abs(e->object - object) < 1e-9 && (verb.objectOnly() || std::abs(e->subject - subject) < 1e-9)) return true;
+            return false;
+        };
+        std::vector<std::string> missing;
+        std::size_t cells = 0;
+        for (double object : kDesignArcPositions) {
+            if (verb.objectOnly()) {
+                ++cells;
+                if (!has(0.0, object)) missing.push_back(text(object));
+                continue;
+            }
+            for (double subject : kDesignArcPositions) {
+                if (subject == object) continue;
+                ++cells;
+                if (!has(subject, object)) missing.push_back("(" + text(subject) + ", " + text(object) + ")");
+            }
+        }
+        if (missing.empty()) continue;
+        std::string list;
+        for (const std::string& item : missing) list += (list.empty() ? "" : " ") + item;
+        warnings.push_back(corpus.sourceFile + ": " + verb.name + ": the examples cover " +
+                           std::to_string(cells - missing.size()) + " of the " + std::to_string(cells) +
+                           (verb.objectOnly() ? " objects" : " (subject, object) pairs") +
+                           " of the SPEC §3.3 design; missing " + list +
+                           (lastLineUnterminated ? " (the file's last line has no newline: was it cut short?)" : ""));
+    }
+    return warnings;
 }
 
 Corpus loadCorpus(const std::filesystem::path& path, const VerbLibrary& verbs) {

@@ -9,7 +9,8 @@
 // signing-space frame (stimuli/signing_space.hpp); roll, pitch, yaw: degrees, the hand's
 // palm frame rotated by R = Rz(yaw)·Ry(pitch)·Rx(roll) about the fixed frame axes
 // (stimuli/sora.hpp). Subject/object: arc positions in [-1, 1] (subject may be empty for
-// object-only verbs). Columns may come in any order; further columns are ignored.
+// object-only verbs). Columns may come in any order; further columns are ignored, but every
+// row has as many fields as the header. A leading UTF-8 BOM is skipped.
 #include "stimuli/verbs.hpp"
 
 #include <filesystem>
@@ -32,9 +33,20 @@ struct Corpus {
     std::string sourceFile;
     std::vector<std::string> comments;      // the '#' lines, without the '#'
     std::vector<CorpusExample> examples;    // grouped by verb (verbs.json order), then example
+    // Verbs whose examples do not cover the SPEC §3.3 design (designWarnings), for stderr.
+    std::vector<std::string> warnings;
 
     std::vector<const CorpusExample*> examplesOf(std::string_view verb) const;
 };
+
+// SPEC §3.3: the arc positions of the recording design; a subject-object verb is recorded at
+// every (subject, object) pair of them with s != o (42), an object-only verb at every object (7).
+inline constexpr double kDesignArcPositions[] = {-0.9, -0.6, -0.3, 0.0, 0.3, 0.6, 0.9};
+
+// One line per verb with examples whose examples miss positions or pairs of the design, naming
+// them; `lastLineUnterminated` (the text did not end in a newline) adds a hint that the file
+// may have been cut short. The models still train on fewer examples; this says so.
+std::vector<std::string> designWarnings(const Corpus& corpus, const VerbLibrary& verbs, bool lastLineUnterminated);
 
 // Throws InputError naming the file, line and column for missing, duplicate, non-numeric or
 // out-of-range values, unknown verbs or hands, keyframes the verb does not have, and examples

@@ -57,11 +57,20 @@ std::vector<EvaluationRow> evaluateVerbModels(const Corpus& corpus, const VerbLi
     for (const VerbDefinition& verb : verbs.verbs) {
         const std::vector<const CorpusExample*> examples = corpus.examplesOf(verb.name);
         if (examples.empty()) continue;
-        const auto trained = [&verb](int degree, bool vector) -> Predictor {
-            return [&verb, degree, vector](const std::vector<const CorpusExample*>& training, const CorpusExample& heldOut) {
+        const std::string& corpusFile = corpus.sourceFile;
+        const auto trained = [&verb, &corpusFile](int degree, bool vector) -> Predictor {
+            return [&verb, &corpusFile, degree, vector](const std::vector<const CorpusExample*>& training, const CorpusExample& heldOut) {
                 ModelOptions options;
                 options.degree = degree;
-                const VerbModel model = trainVerbModel(verb, training, options);
+                const VerbModel model = [&] {
+                    try {
+                        return trainVerbModel(verb, training, options);
+                    } catch (const InputError& e) {
+                        // Too few examples for a fold: name the corpus and the verb's first row.
+                        throw InputError(corpusFile, training.empty() ? 0 : training.front()->firstLine, "verb",
+                                         e.detail() + " (leave-one-out folds train on one example fewer)");
+                    }
+                }();
                 return vector ? predictVector(model, heldOut.subject, heldOut.object)
                               : predictPoint(model, heldOut.subject, heldOut.object);
             };

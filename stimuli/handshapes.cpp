@@ -1,6 +1,7 @@
 #include "stimuli/handshapes.hpp"
 
 #include "common/error.hpp"
+#include "common/number_format.hpp"
 #include "stimuli/json_source.hpp"
 #include "stimuli/scenes_path.hpp"
 
@@ -34,6 +35,8 @@ public:
             if (!known.count(key)) fail({jsonKey(key)}, key, "unknown key (expected one of format, version, about, fingerPresets, thumbPresets, handshapes)");
             (void)value;
         }
+        if (const auto format = root.find("format"); format != root.end() && *format != "signstim-handshapes")
+            fail({"\"format\""}, "format", "expected \"signstim-handshapes\", got " + format->dump() + " (a file of another kind?)");
         // Version 2: thumbs for the spin-free thumb swing (docs/hand.md). Version 1 thumbs were
         // tuned for SPEC §1.4's literal chain and would now be rolled by θ.
         // A file without "version" predates the field being checked: it is a version 1 file.
@@ -70,8 +73,35 @@ public:
     }
 
 private:
+    // The line is that of the JSON pointer the anchors spell (keys, and "name": "X" for the
+    // handshape named X), recorded while parsing, so it is right whatever the key order and
+    // layout; text anchors where they spell no recorded value.
     [[noreturn]] void fail(const std::vector<std::string>& anchors, const std::string& field,
                            const std::string& message) const {
+        std::string pointer;
+        bool spelled = true;
+        for (const std::string& anchor : anchors) {
+            const bool quoted = anchor.size() >= 2 && anchor.front() == '"' && anchor.back() == '"';
+            if (quoted && anchor.find('"', 1) == anchor.size() - 1) {
+                pointer += "/" + jsonPointerToken(anchor.substr(1, anchor.size() - 2));
+                continue;
+            }
+            const std::string prefix = "\"name\": \"";
+            spelled = quoted && anchor.rfind(prefix, 0) == 0 && pointer == "/handshapes" && source_.root.is_object();
+            if (!spelled) break;
+            spelled = false;
+            const std::string name = anchor.substr(prefix.size(), anchor.size() - prefix.size() - 1);
+            const auto list = source_.root.find("handshapes");
+            if (list == source_.root.end() || !list->is_array()) break;
+            const json& shapes = *list;
+            std::size_t index = 0;
+            while (index < shapes.size() && !(shapes[index].is_object() && shapes[index].value("name", json()) == name)) ++index;
+            spelled = index < shapes.size();
+            if (!spelled) break;
+            pointer += "/" + std::to_string(index);
+        }
+        if (spelled && !pointer.empty() && source_.lines.count(pointer))
+            throw InputError(source_.file, source_.lineAt(pointer), field, message);
         source_.fail(anchors, field, message);
     }
 
@@ -79,12 +109,7 @@ private:
                  float minimum, float maximum) const {
         if (!value.is_number()) fail(anchors, field, "must be a number, got " + std::string(value.type_name()));
         const double v = value.get<double>();
-        if (!std::isfinite(v)) fail(anchors, field, "must be finite");
-        if (v < minimum || v > maximum) {
-            std::ostringstream message;
-            message << "out of range: " << v << " not in [" << minimum << ", " << maximum << "]";
-            fail(anchors, field, message.str());
-        }
+        if (!(v >= minimum && v <= maximum)) fail(anchors, field, "out of range: " + rangeMessage(minimum, maximum, "", v));
         return static_cast<float>(v);
     }
 
@@ -278,7 +303,7 @@ const Handshape& HandshapeLibrary::at(std::string_view name) const {
 HandshapeLibrary parseHandshapes(const std::string& text, const std::string& fileName,
                                  const hand::HandModel& model) {
     const JsonSource source = parseJsonText(text, fileName);
-    return Parser(source, model).parse();
+    return withJsonErrors(source, [&] { return Parser(source, model).parse(); });
 }
 
 std::filesystem::path handshapesFile(const std::filesystem::path& explicitFile,
@@ -288,7 +313,7 @@ std::filesystem::path handshapesFile(const std::filesystem::path& explicitFile,
 
 HandshapeLibrary loadHandshapes(const std::filesystem::path& file, const hand::HandModel& model) {
     const JsonSource source = readJsonFile(file);
-    return Parser(source, model).parse();
+    return withJsonErrors(source, [&] { return Parser(source, model).parse(); });
 }
 
 }  // namespace signstim::stimuli

@@ -18,20 +18,31 @@ glm::dquat aboutVertical(double angleRad) { return glm::dquat(std::cos(0.5 * ang
 double heading(const glm::dvec3& v) { return std::atan2(v.x, v.z); }
 
 double readNumber(const JsonSource& source, const nlohmann::json& object, const std::string& key,
-                  const std::vector<std::string>& anchors, const std::string& pointer, double fallback) {
+                  const std::vector<std::string>& anchors, const std::string& pointer, double fallback,
+                  const NumberRange& range) {
     if (!object.contains(key)) return fallback;
     const nlohmann::json& value = object[key];
-    if (!value.is_number() || !std::isfinite(value.get<double>())) {
+    if (!value.is_number()) {
         std::vector<std::string> at = anchors;
         at.push_back("\"" + key + "\"");
         source.fail(at, pointer + "/" + key, "expected a number");
     }
-    return value.get<double>();
+    return source.number(value, pointer + "/" + key, range);
 }
+
+// [D] ranges of the performer's parameters (docs/verbs.md "Ranges of numbers"): gains are
+// fractions of the arc angle or of the reach, a few times either way at most.
+constexpr NumberRange kGainRange{-10.0, 10.0, ""};
+constexpr NumberRange kReachGainRange{0.1, 10.0, ""};
+constexpr NumberRange kNoisePositionRange{0.0, 100.0, "mm"};
+constexpr NumberRange kNoiseOrientationRange{0.0, 90.0, "degrees"};
+constexpr NumberRange kPathFractionRange{0.0, 1.0, ""};
 
 }  // namespace
 
 ReferencePerformer parseReferencePerformer(const JsonSource& source, const VerbLibrary& verbs) {
+    return withJsonErrors(source, [&] {
+    source.checkFormat("signstim-reference-performer", 1);
     const nlohmann::json& root = source.root;
     ReferencePerformer performer;
     if (!root.is_object() || root.value("synthetic", false) != true)
@@ -44,7 +55,8 @@ ReferencePerformer parseReferencePerformer(const JsonSource& source, const VerbL
         for (const auto& line : root["description"])
             if (line.is_string()) performer.description.push_back(line.get<std::string>());
     if (root.contains("torsoPivotMm"))
-        performer.torsoPivotMm = readVector3(source, root["torsoPivotMm"], {"\"torsoPivotMm\""}, "/torsoPivotMm");
+        performer.torsoPivotMm = readVector3(source, root["torsoPivotMm"], {"\"torsoPivotMm\""}, "/torsoPivotMm",
+                                             kSigningSpacePositionRange);
     if (!root.contains("arcPositions") || !root["arcPositions"].is_array() || root["arcPositions"].size() < 2)
         source.fail({"\"arcPositions\""}, "/arcPositions", "expected an array of arc positions");
     for (const auto& p : root["arcPositions"]) {
@@ -57,12 +69,13 @@ ReferencePerformer parseReferencePerformer(const JsonSource& source, const VerbL
         performer.arcPositions.push_back(p.get<double>());
     }
     const nlohmann::json bias = root.value("bias", nlohmann::json::object());
-    if (bias.contains("offsetMm")) performer.biasOffsetMm = readVector3(source, bias["offsetMm"], {"\"bias\"", "\"offsetMm\""}, "/bias/offsetMm");
-    performer.biasReachGain = readNumber(source, bias, "reachGain", {"\"bias\""}, "/bias", 1.0);
-    performer.biasYawDeg = readNumber(source, bias, "yawDeg", {"\"bias\""}, "/bias", 0.0);
+    if (bias.contains("offsetMm")) performer.biasOffsetMm = readVector3(source, bias["offsetMm"], {"\"bias\"", "\"offsetMm\""}, "/bias/offsetMm",
+                                                                        kSigningSpacePositionRange);
+    performer.biasReachGain = readNumber(source, bias, "reachGain", {"\"bias\""}, "/bias", 1.0, kReachGainRange);
+    performer.biasYawDeg = readNumber(source, bias, "yawDeg", {"\"bias\""}, "/bias", 0.0, kAngleDegreesRange);
     const nlohmann::json noise = root.value("noise", nlohmann::json::object());
-    performer.noisePositionMm = readNumber(source, noise, "positionMm", {"\"noise\""}, "/noise", 0.0);
-    performer.noiseOrientationDeg = readNumber(source, noise, "orientationDeg", {"\"noise\""}, "/noise", 0.0);
+    performer.noisePositionMm = readNumber(source, noise, "positionMm", {"\"noise\""}, "/noise", 0.0, kNoisePositionRange);
+    performer.noiseOrientationDeg = readNumber(source, noise, "orientationDeg", {"\"noise\""}, "/noise", 0.0, kNoiseOrientationRange);
     if (performer.noisePositionMm < 0 || performer.noiseOrientationDeg < 0)
         source.fail({"\"noise\""}, "/noise", "noise levels must be >= 0");
 
@@ -93,18 +106,18 @@ ReferencePerformer parseReferencePerformer(const JsonSource& source, const VerbL
                     rule.rightKeyframe = item["rigidWithRight"].get<int>();
                 } else if (item.contains("followsRightPath")) {
                     rule.kind = PerformerRule::Kind::FollowsRightPath;
-                    rule.pathFraction = readNumber(source, item, "followsRightPath", handAt, rulePointer, 0.0);
+                    rule.pathFraction = readNumber(source, item, "followsRightPath", handAt, rulePointer, 0.0, kPathFractionRange);
                     if (h == 0) source.fail(handAt, rulePointer, "only the left hand can follow the right hand's path");
                 } else {
-                    rule.towardSubject = readNumber(source, item, "towardSubject", handAt, rulePointer, 0.0);
-                    rule.towardObject = readNumber(source, item, "towardObject", handAt, rulePointer, 0.0);
-                    rule.reachMm = readNumber(source, item, "reachMm", handAt, rulePointer, 0.0);
+                    rule.towardSubject = readNumber(source, item, "towardSubject", handAt, rulePointer, 0.0, kGainRange);
+                    rule.towardObject = readNumber(source, item, "towardObject", handAt, rulePointer, 0.0, kGainRange);
+                    rule.reachMm = readNumber(source, item, "reachMm", handAt, rulePointer, 0.0, kSigningSpacePositionRange);
                     if (item.contains("yaw")) {
                         if (item["yaw"] != "path") source.fail(handAt, rulePointer + "/yaw", "\"yaw\" can only be \"path\"");
                         rule.yawFollowsPath = true;
                     }
-                    rule.yawTowardSubject = readNumber(source, item, "yawTowardSubject", handAt, rulePointer, 0.0);
-                    rule.yawTowardObject = readNumber(source, item, "yawTowardObject", handAt, rulePointer, 0.0);
+                    rule.yawTowardSubject = readNumber(source, item, "yawTowardSubject", handAt, rulePointer, 0.0, kGainRange);
+                    rule.yawTowardObject = readNumber(source, item, "yawTowardObject", handAt, rulePointer, 0.0, kGainRange);
                     if (verb.objectOnly() && (rule.towardSubject != 0.0 || rule.yawTowardSubject != 0.0))
                         source.fail(handAt, rulePointer, verb.name + " inflects for the object only: no subject terms");
                 }
@@ -115,6 +128,7 @@ ReferencePerformer parseReferencePerformer(const JsonSource& source, const VerbL
         performer.rules[verb.name] = std::move(perHand);
     }
     return performer;
+    });
 }
 
 ReferencePerformer loadReferencePerformer(const std::filesystem::path& path, const VerbLibrary& verbs) {

@@ -1,6 +1,7 @@
 #include "stimuli/sensor_io.hpp"
 
 #include "common/error.hpp"
+#include "common/number_format.hpp"
 #include "stimuli/json_source.hpp"
 
 #include <algorithm>
@@ -43,6 +44,9 @@ double parseNumber(std::string_view cell, const std::string& file, int line, std
     double value = 0.0;
     const char* end = cell.data() + cell.size();
     const auto [ptr, ec] = std::from_chars(cell.data(), end, value);
+    if (ec == std::errc::result_out_of_range && ptr == end) {
+        throw InputError(file, line, std::string(column), "'" + std::string(cell) + "' is out of the range of a double");
+    }
     if (cell.empty() || ec != std::errc() || ptr != end) {
         throw InputError(file, line, std::string(column), "not a number: '" + std::string(cell) + "'");
     }
@@ -60,8 +64,9 @@ int parseSensorId(std::string_view cell, const std::string& file, int line) {
                      "unknown sensor id '" + std::string(cell) + "' (expected hand, thumb, index, middle, ring, little or 0..5)");
 }
 
-std::string formatNumber(double v) {
-    char buffer[32];
+// Output numbers: 4 decimals (0.1 µm, s to 0.1 ms).
+std::string fixed4(double v) {
+    char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.4f", v);
     std::string s = buffer;
     if (s == "-0.0000") s = "0.0000";
@@ -93,8 +98,7 @@ struct JsonReader {
         if (!v.is_number() || !std::isfinite(v.get<double>())) fail(path, "must be a finite number");
         const double value = v.get<double>();
         if (value < minimum || value > maximum) {
-            fail(path, "out of range: " + formatNumber(value) + " not in [" + formatNumber(minimum) + ", " +
-                           formatNumber(maximum) + "]");
+            fail(path, "out of range: " + rangeMessage(minimum, maximum, "", value));
         }
         return static_cast<float>(value);
     }
@@ -109,7 +113,8 @@ struct JsonReader {
         for (std::size_t i = 0; i < N; ++i) {
             if (!v[i].is_number() || !std::isfinite(v[i].get<double>())) fail(path, "element " + std::to_string(i) + " is not a finite number");
             const double value = v[i].get<double>();
-            if (value < minimum || value > maximum) fail(path, "element " + std::to_string(i) + " out of range");
+            if (value < minimum || value > maximum)
+                fail(path, "element " + std::to_string(i) + " out of range: " + rangeMessage(minimum, maximum, "", value));
             out[i] = static_cast<float>(value);
         }
         return out;
@@ -126,11 +131,13 @@ struct JsonReader {
     }
 };
 
+hand::SensorCalibration parseCalibration(const JsonSource& source);
+
 }  // namespace
 
 std::vector<SensorSample> parseSensorSamples(const std::string& text, const std::string& file) {
     std::vector<SensorSample> samples;
-    std::istringstream in(text);
+    std::istringstream in(std::string(withoutByteOrderMark(text)));
     std::string lineText;
     int line = 0;
     std::array<int, kColumns.size()> columnOf{};
@@ -173,15 +180,20 @@ std::vector<SensorSample> parseSensorSamples(const std::string& text, const std:
                                                  std::to_string(cells.size()));
         }
         auto cell = [&](int k) { return cells[columnOf[k]]; };
-        const double time = parseNumber(cell(0), file, line, "time");
+        const auto number = [&](int k, const NumberRange& range) {
+            const double value = parseNumber(cell(k), file, line, kColumns[static_cast<std::size_t>(k)]);
+            checkInRange(value, range, file, line, std::string(kColumns[static_cast<std::size_t>(k)]));
+            return value;
+        };
+        const double time = number(0, kSampleTimeRange);
         const int sensor = parseSensorId(cell(1), file, line);
         hand::SensorReading reading;
-        reading.positionMm = {static_cast<float>(parseNumber(cell(2), file, line, "x")),
-                              static_cast<float>(parseNumber(cell(3), file, line, "y")),
-                              static_cast<float>(parseNumber(cell(4), file, line, "z"))};
-        reading.azimuthDeg = static_cast<float>(parseNumber(cell(5), file, line, "azimuth"));
-        reading.elevationDeg = static_cast<float>(parseNumber(cell(6), file, line, "elevation"));
-        reading.rollDeg = static_cast<float>(parseNumber(cell(7), file, line, "roll"));
+        reading.positionMm = {static_cast<float>(number(2, kSensorPositionRange)),
+                              static_cast<float>(number(3, kSensorPositionRange)),
+                              static_cast<float>(number(4, kSensorPositionRange))};
+        reading.azimuthDeg = static_cast<float>(number(5, kAngleDegreesRange));
+        reading.elevationDeg = static_cast<float>(number(6, kAngleDegreesRange));
+        reading.rollDeg = static_cast<float>(number(7, kAngleDegreesRange));
         if (samples.empty() || time != samples.back().timeS) {
             if (!samples.empty() && time < samples.back().timeS) {
                 throw InputError(file, line, "time", "time goes backwards (" + formatNumber(time) + " after " +
@@ -210,6 +222,11 @@ std::vector<SensorSample> loadSensorSamples(const std::filesystem::path& file) {
 
 hand::SensorCalibration parseSensorCalibration(const std::string& text, const std::string& file) {
     const JsonSource source = parseJsonText(text, file);
+    return withJsonErrors(source, [&] { return parseCalibration(source); });
+}
+
+namespace {
+hand::SensorCalibration parseCalibration(const JsonSource& source) {
     const json& root = source.root;
     const JsonReader r{source};
     if (!root.is_object()) r.fail({}, "the top level must be an object");
@@ -245,6 +262,7 @@ hand::SensorCalibration parseSensorCalibration(const std::string& text, const st
     }
     return cal;
 }
+}  // namespace
 
 hand::SensorCalibration loadSensorCalibration(const std::filesystem::path& file) {
     return parseSensorCalibration(readTextFile(file), file.string());
@@ -276,9 +294,9 @@ std::string formatSensorSamples(const std::vector<SensorSample>& samples) {
     for (const SensorSample& s : samples) {
         for (int i = 0; i < hand::kSensorCount; ++i) {
             const hand::SensorReading& r = s.readings[i];
-            out += formatNumber(s.timeS) + "," + std::string(kSensorNames[i]) + "," + formatNumber(r.positionMm.x) + "," +
-                   formatNumber(r.positionMm.y) + "," + formatNumber(r.positionMm.z) + "," + formatNumber(r.azimuthDeg) +
-                   "," + formatNumber(r.elevationDeg) + "," + formatNumber(r.rollDeg) + "\n";
+            out += fixed4(s.timeS) + "," + std::string(kSensorNames[i]) + "," + fixed4(r.positionMm.x) + "," +
+                   fixed4(r.positionMm.y) + "," + fixed4(r.positionMm.z) + "," + fixed4(r.azimuthDeg) +
+                   "," + fixed4(r.elevationDeg) + "," + fixed4(r.rollDeg) + "\n";
         }
     }
     return out;
@@ -296,6 +314,22 @@ const char* caseName(hand::ProximalJointCase c) {
 }
 json point(const glm::vec3& p) { return json::array({std::round(p.x * 1e4) / 1e4, std::round(p.y * 1e4) / 1e4, std::round(p.z * 1e4) / 1e4}); }
 }  // namespace
+
+void checkSensorHandFinite(const std::vector<SensorSample>& samples, const std::vector<hand::SensorHandFrame>& frames,
+                           const std::string& file) {
+    const auto finite = [](const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+    for (std::size_t i = 0; i < samples.size() && i < frames.size(); ++i) {
+        bool ok = true;
+        for (const hand::DigitJoints& j : frames[i].joints)
+            ok = ok && finite(j.knuckle) && finite(j.distalJoint) && finite(j.proximalJoint) && finite(j.underNail);
+        for (const auto& segment : frames[i].segments)
+            for (const glm::vec3& v : segment) ok = ok && finite(v);
+        if (!ok)
+            throw InputError(file, samples[i].line, "",
+                             "the hand rebuilt from the sample at time " + formatNumber(samples[i].timeS) +
+                                 " is not finite (readings that no hand can take?); nothing is written");
+    }
+}
 
 std::string formatSensorHandJson(hand::Side side, const std::vector<SensorSample>& samples,
                                  const std::vector<hand::SensorHandFrame>& frames) {
@@ -329,8 +363,8 @@ std::string formatSensorHandCsv(hand::Side side, const std::vector<SensorSample>
                                 const std::vector<hand::SensorHandFrame>& frames) {
     std::string out = "time,kind,name,index,x,y,z\n";
     auto row = [&](double t, const char* kind, std::string_view name, const std::string& index, const glm::vec3& p) {
-        out += formatNumber(t) + "," + kind + "," + std::string(name) + "," + index + "," + formatNumber(p.x) + "," +
-               formatNumber(p.y) + "," + formatNumber(p.z) + "\n";
+        out += fixed4(t) + "," + kind + "," + std::string(name) + "," + index + "," + fixed4(p.x) + "," +
+               fixed4(p.y) + "," + fixed4(p.z) + "\n";
     };
     for (std::size_t i = 0; i < samples.size() && i < frames.size(); ++i) {
         const double t = samples[i].timeS;

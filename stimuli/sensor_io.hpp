@@ -4,7 +4,8 @@
 // naming the file, the line and the field; nothing is written for a bad input.
 //
 // Samples CSV: a header naming the columns time,sensor,x,y,z,azimuth,elevation,roll (any
-// order; extra columns are an error), then one row per sensor and time. Sensor ids: hand,
+// order; extra columns are an error), then one row per sensor and time; a leading UTF-8 BOM
+// is skipped. Sensor ids: hand,
 // thumb, index, middle, ring, little, or 0..5 in that order. Rows with the same time form one
 // sample, which must hold each of the six sensors exactly once; times must increase.
 // Units: seconds, millimetres, degrees.
@@ -39,6 +40,11 @@ hand::SensorCalibration loadSensorCalibration(const std::filesystem::path& file)
 std::string formatSensorCalibration(const hand::SensorCalibration& calibration);
 // Samples as CSV in the format parseSensorSamples reads.
 std::string formatSensorSamples(const std::vector<SensorSample>& samples);
+
+// Throws InputError naming `file` (the samples) and the sample's line when a rebuilt frame
+// holds a coordinate that is not finite: such a frame is never written.
+void checkSensorHandFinite(const std::vector<SensorSample>& samples, const std::vector<hand::SensorHandFrame>& frames,
+                           const std::string& file);
 
 // The reconstructed hand, one entry per sample: joints A–D per digit and the 16 boxes.
 // JSON: {"side", "samples": [{"time", "joints": {"thumb": {"A": [x,y,z], "B", "C", "D",

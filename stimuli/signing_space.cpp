@@ -1,6 +1,7 @@
 #include "stimuli/signing_space.hpp"
 
 #include "common/error.hpp"
+#include "common/number_format.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -10,7 +11,7 @@ namespace signstim::stimuli {
 void checkArcPosition(double position, const std::string& source, const std::string& field) {
     if (!(position >= -1.0 && position <= 1.0)) {
         throw InputError(source, 0, field,
-                         "arc position " + std::to_string(position) +
+                         "arc position " + formatNumber(position) +
                              " is outside [-1, 1] (-1 = signer's far left, 0 = straight ahead, "
                              "1 = far right)");
     }

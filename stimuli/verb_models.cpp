@@ -1,5 +1,6 @@
 #include "stimuli/verb_models.hpp"
 
+#include "common/number_format.hpp"
 #include "stimuli/sora.hpp"
 
 #include <cmath>
@@ -32,8 +33,11 @@ Vector3Polynomial fitVector3(const PolynomialBasis& basis, const std::vector<Sam
 }
 
 // 10 significant digits: far below any measurement, and stable against last-bit differences.
+// A value that is not finite is kept (written as null), so that formatCheckedVerbModels refuses
+// it rather than a 0 standing in for it unseen.
 double rounded(double value) {
-    if (value == 0.0 || !std::isfinite(value)) return 0.0;
+    if (!std::isfinite(value)) return value;
+    if (value == 0.0) return 0.0;
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.10g", value);
     const double result = std::strtod(buffer, nullptr);
@@ -152,6 +156,7 @@ VerbModel trainVerbModel(const VerbDefinition& verb, const std::vector<const Cor
 
 TrainedVerbModels trainVerbModels(const Corpus& corpus, const VerbLibrary& verbs, const ModelOptions& options) {
     TrainedVerbModels models;
+    models.sourceFile = corpus.sourceFile;
     models.corpusDescription = std::filesystem::path(corpus.sourceFile).filename().string();
     if (!corpus.comments.empty()) {
         std::string first = corpus.comments.front();
@@ -321,12 +326,18 @@ struct ModelReader {
     [[noreturn]] void fail(const std::string& field, const std::string& message) const {
         source.fail(anchors, pointer + field, message + " (regenerate the file with `signstim train`)");
     }
-    std::vector<double> numbersOf(const nlohmann::json& value, std::size_t count, const std::string& field) const {
+    std::vector<double> numbersOf(const nlohmann::json& value, std::size_t count, const std::string& field,
+                                  const NumberRange& range) const {
         if (!value.is_array() || value.size() != count) fail(field, "expected " + std::to_string(count) + " numbers");
         std::vector<double> result;
-        for (const auto& n : value) {
-            if (!n.is_number()) fail(field, "expected numbers");
-            result.push_back(n.get<double>());
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            if (!value[i].is_number()) fail(field, "expected numbers");
+            const double number = value[i].get<double>();
+            const std::string element = pointer + field + "/" + std::to_string(i);
+            if (!range.contains(number))
+                source.failAt(element, rangeMessage(range.minimum, range.maximum, range.unit, number) +
+                                           " (regenerate the file with `signstim train`)");
+            result.push_back(number);
         }
         return result;
     }
@@ -334,8 +345,9 @@ struct ModelReader {
         if (!value.is_object() || !value.contains("x") || !value.contains("y") || !value.contains("z"))
             fail(field, "expected {\"x\": [...], \"y\": [...], \"z\": [...]}");
         const std::size_t n = basis.termCount();
-        return {Polynomial{basis, numbersOf(value["x"], n, field + "/x")}, Polynomial{basis, numbersOf(value["y"], n, field + "/y")},
-                Polynomial{basis, numbersOf(value["z"], n, field + "/z")}};
+        return {Polynomial{basis, numbersOf(value["x"], n, field + "/x", kModelCoefficientRange)},
+                Polynomial{basis, numbersOf(value["y"], n, field + "/y", kModelCoefficientRange)},
+                Polynomial{basis, numbersOf(value["z"], n, field + "/z", kModelCoefficientRange)}};
     }
     const nlohmann::json& at(const nlohmann::json& object, const std::string& key, const std::string& field) const {
         if (!object.is_object() || !object.contains(key)) fail(field + "/" + key, "missing field '" + key + "'");
@@ -346,10 +358,13 @@ struct ModelReader {
 }  // namespace
 
 TrainedVerbModels parseVerbModels(const JsonSource& source, const VerbLibrary& verbs) {
+    return withJsonErrors(source, [&] {
     const nlohmann::json& root = source.root;
     if (!root.is_object() || root.value("format", "") != "signstim-verb-models")
         source.fail({"\"format\""}, "/format", "not a signstim verb-models file (\"format\": \"signstim-verb-models\")");
+    source.checkFormat("signstim-verb-models", 1);
     TrainedVerbModels models;
+    models.sourceFile = source.file;
     models.corpusDescription = root.value("trainedOn", "");
     if (!root.contains("verbs") || !root["verbs"].is_array()) source.fail({"\"verbs\""}, "/verbs", "expected an array");
     for (std::size_t i = 0; i < root["verbs"].size(); ++i) {
@@ -358,6 +373,7 @@ TrainedVerbModels parseVerbModels(const JsonSource& source, const VerbLibrary& v
         if (!v.is_object() || !v.contains("verb") || !v["verb"].is_string()) reader.fail("/verb", "missing verb name");
         VerbModel model;
         model.verb = v["verb"].get<std::string>();
+        model.sourceLine = source.lineAt(reader.pointer);
         reader.anchors.push_back("\"" + model.verb + "\"");
         const VerbDefinition& verb = verbs.get(model.verb, source.file, source.lineOf(reader.anchors), reader.pointer + "/verb");
         const int degree = reader.at(v, "degree", "").is_number_integer() ? v["degree"].get<int>() : -1;
@@ -384,7 +400,11 @@ TrainedVerbModels parseVerbModels(const JsonSource& source, const VerbLibrary& v
                 const std::string where = "/" + std::to_string(h) + "/" + std::to_string(k);
                 model.point.position[h].push_back(reader.poly(point[h][k], model.basis, "/point" + where));
                 const std::vector<double> q = reader.numbersOf(reader.at(orientation[h][k], "mean", "/orientation" + where), 4,
-                                                               "/orientation" + where + "/mean");
+                                                               "/orientation" + where + "/mean", NumberRange{-1.0, 1.0, ""});
+                const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+                if (std::abs(norm - 1.0) > 1e-3)
+                    reader.fail("/orientation" + where + "/mean", "expected a unit quaternion [w, x, y, z] (length " +
+                                                                       formatNumber(norm) + ")");
                 model.orientation.mean[h].push_back(glm::normalize(glm::dquat(q[0], q[1], q[2], q[3])));
                 model.orientation.relativeSora[h].push_back(
                     reader.poly(reader.at(orientation[h][k], "sora", "/orientation" + where), model.basis, "/orientation" + where + "/sora"));
@@ -406,14 +426,18 @@ TrainedVerbModels parseVerbModels(const JsonSource& source, const VerbLibrary& v
             const std::string where = "/vector/rightLocation/" + std::to_string(c);
             GaussianComponent component;
             const nlohmann::json& weight = reader.at(components[c], "weight", where);
-            if (!weight.is_number() || !(weight.get<double>() > 0.0)) reader.fail(where + "/weight", "expected a positive weight");
+            if (!weight.is_number() || !(weight.get<double>() > 0.0) || !(weight.get<double>() <= 1.0))
+                reader.fail(where + "/weight", "expected a weight in (0, 1]" +
+                                                   (weight.is_number() ? ", got " + formatNumber(weight.get<double>()) : std::string()));
             component.weight = weight.get<double>();
-            const std::vector<double> m = reader.numbersOf(reader.at(components[c], "meanMm", where), 3, where + "/meanMm");
+            const std::vector<double> m = reader.numbersOf(reader.at(components[c], "meanMm", where), 3, where + "/meanMm",
+                                                         kSigningSpacePositionRange);
             component.meanMm = glm::dvec3(m[0], m[1], m[2]);
             const nlohmann::json& covariance = reader.at(components[c], "covarianceMm2", where);
             if (!covariance.is_array() || covariance.size() != 3) reader.fail(where + "/covarianceMm2", "expected a 3×3 matrix");
             for (int r = 0; r < 3; ++r) {
-                const std::vector<double> row = reader.numbersOf(covariance[static_cast<std::size_t>(r)], 3, where + "/covarianceMm2");
+                const std::vector<double> row = reader.numbersOf(covariance[static_cast<std::size_t>(r)], 3,
+                                                          where + "/covarianceMm2/" + std::to_string(r), kCovarianceRange);
                 for (int col = 0; col < 3; ++col) component.covarianceMm2[col][r] = row[static_cast<std::size_t>(col)];
             }
             model.vector.rightLocation.components.push_back(component);
@@ -425,14 +449,32 @@ TrainedVerbModels parseVerbModels(const JsonSource& source, const VerbLibrary& v
         }
         const nlohmann::json& box = reader.at(vector, "searchBoxMm", "/vector");
         if (!box.is_array() || box.size() != 2) reader.fail("/vector/searchBoxMm", "expected [[min], [max]]");
-        const std::vector<double> lo = reader.numbersOf(box[0], 3, "/vector/searchBoxMm/0");
-        const std::vector<double> hi = reader.numbersOf(box[1], 3, "/vector/searchBoxMm/1");
+        const std::vector<double> lo = reader.numbersOf(box[0], 3, "/vector/searchBoxMm/0", kSigningSpacePositionRange);
+        const std::vector<double> hi = reader.numbersOf(box[1], 3, "/vector/searchBoxMm/1", kSigningSpacePositionRange);
+        for (int axis = 0; axis < 3; ++axis)
+            if (!(lo[static_cast<std::size_t>(axis)] <= hi[static_cast<std::size_t>(axis)]))
+                reader.fail("/vector/searchBoxMm", "the box's minimum exceeds its maximum");
         model.vector.searchMinMm = glm::dvec3(lo[0], lo[1], lo[2]);
         model.vector.searchMaxMm = glm::dvec3(hi[0], hi[1], hi[2]);
         if (models.find(model.verb)) reader.fail("/verb", "verb " + model.verb + " appears twice");
         models.verbs.push_back(std::move(model));
     }
     return models;
+    });
+}
+
+std::string formatCheckedVerbModels(const TrainedVerbModels& models, const VerbLibrary& verbs,
+                                    const std::string& outputName) {
+    std::string text = formatVerbModels(models);
+    try {
+        (void)parseVerbModels(parseJsonText(text, outputName), verbs);
+    } catch (const InputError& e) {
+        // The corpus is what the user can fix; the model's field says where it went wrong.
+        throw InputError(models.sourceFile, 0, e.field(),
+                         "the models trained on this corpus would not load back, so " + outputName +
+                             " is not written: " + e.detail());
+    }
+    return text;
 }
 
 TrainedVerbModels loadVerbModels(const std::filesystem::path& path, const VerbLibrary& verbs) {

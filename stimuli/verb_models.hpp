@@ -44,6 +44,7 @@ struct VectorModel {
 
 struct VerbModel {
     std::string verb;
+    int sourceLine = 0;  // line of its entry in the models file (0: trained in memory)
     PolynomialBasis basis;
     std::size_t hands = 0;
     std::size_t keyframes = 0;
@@ -55,6 +56,7 @@ struct VerbModel {
 
 struct TrainedVerbModels {
     std::string corpusDescription;  // what they were trained on (file name, first comment)
+    std::string sourceFile;         // the models file they were read from, or the corpus trained on
     std::vector<VerbModel> verbs;
     const VerbModel* find(const std::string& verb) const;
 };
@@ -85,8 +87,14 @@ std::vector<glm::dvec3> pathSamples(const std::vector<glm::dvec3>& keyframePosit
 // JSON: deterministic text (numbers rounded to 10 significant digits) so that training the
 // same corpus reproduces the file byte for byte.
 std::string formatVerbModels(const TrainedVerbModels& models);
+// formatVerbModels, then the text read back through parseVerbModels before it is returned, so
+// that `signstim train` never writes a file it would refuse to read: a refusal is an InputError
+// naming the corpus (models.sourceFile) and what the reader said.
+std::string formatCheckedVerbModels(const TrainedVerbModels& models, const VerbLibrary& verbs,
+                                    const std::string& outputName);
 // Checks the models against the verb library (hands, keyframes, class); a mismatch asks to
-// retrain with `signstim train`.
+// retrain with `signstim train`. Every number must be finite and within its range
+// (stimuli/number_ranges.hpp).
 TrainedVerbModels parseVerbModels(const JsonSource& source, const VerbLibrary& verbs);
 TrainedVerbModels loadVerbModels(const std::filesystem::path& path, const VerbLibrary& verbs);
 

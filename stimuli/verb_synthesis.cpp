@@ -1,5 +1,6 @@
 #include "stimuli/verb_synthesis.hpp"
 
+#include "common/number_format.hpp"
 #include "stimuli/signing_space.hpp"
 #include "stimuli/sora.hpp"
 
@@ -89,7 +90,8 @@ VerbPerformance performanceFromPoses(const VerbDefinition& verb, VerbVersion ver
             for (std::size_t j = (pass == 0 ? 0 : 1); j < keyframes; ++j) {
                 const std::size_t k = backward ? keyframes - 1 - j : j;
                 const double local = backward ? pathSeconds - verb.citation[h][k].timeSeconds : verb.citation[h][k].timeSeconds;
-                track.keyframes.push_back({pass * pathSeconds + local, poses[h][k], verb.citation[h][k].handshape});
+                track.keyframes.push_back({pass * pathSeconds + local, poses[h][k], verb.citation[h][k].handshape,
+                                           verb.citation[h][k].handshapeLine, verb.citation[h][k].handshapeField});
             }
         }
         performance.hands.push_back(std::move(track));
@@ -103,9 +105,61 @@ std::string animatorFileName(const VerbDefinition& verb, double subject, double 
     return verb.name + "_s" + positionText(subject) + "_o" + positionText(object) + ".json";
 }
 
+namespace {
+
+bool finite(const HandPose& pose) {
+    return std::isfinite(pose.positionMm.x) && std::isfinite(pose.positionMm.y) && std::isfinite(pose.positionMm.z) &&
+           std::isfinite(pose.orientation.w) && std::isfinite(pose.orientation.x) && std::isfinite(pose.orientation.y) &&
+           std::isfinite(pose.orientation.z);
+}
+
+// A model's prediction must be a pose in the signing space: coefficients within their ranges
+// can still add up, at some (s, o), to a position no arm reaches.
+void checkPredictedPoses(const VerbModel& model, const std::string& modelsFile, const VerbDefinition& verb,
+                         double subject, double object, const std::vector<std::vector<HandPose>>& poses) {
+    for (std::size_t h = 0; h < poses.size(); ++h)
+        for (std::size_t k = 0; k < poses[h].size(); ++k) {
+            const HandPose& pose = poses[h][k];
+            bool inside = finite(pose);
+            for (int axis = 0; axis < 3 && inside; ++axis) inside = kSigningSpacePositionRange.contains(pose.positionMm[axis]);
+            if (inside) continue;
+            const glm::dvec3& p = pose.positionMm;
+            throw InputError(modelsFile, model.sourceLine, "verb " + verb.name,
+                             "the model predicts, for subject " + formatNumber(subject) + " object " + formatNumber(object) +
+                                 ", the " + toString(verb.hands[h]) + " hand at keyframe " + std::to_string(k) + " at (" +
+                                 formatNumber(p.x) + ", " + formatNumber(p.y) + ", " + formatNumber(p.z) +
+                                 ") mm; positions must be finite and within " +
+                                 formatNumber(kSigningSpacePositionRange.minimum) + " to " +
+                                 formatNumber(kSigningSpacePositionRange.maximum) +
+                                 " mm: retrain with `signstim train`");
+        }
+}
+
+void checkHandshapes(const VerbPerformance& performance, const HandshapeLibrary& library) {
+    for (const HandTrack& track : performance.hands)
+        for (const PerformanceKeyframe& key : track.keyframes) {
+            if (library.find(key.handshape)) continue;
+            std::string names;
+            for (const Handshape& shape : library.shapes) names += (names.empty() ? "" : " ") + shape.name;
+            throw InputError(performance.handshapeFile, key.handshapeLine, key.handshapeField,
+                             "unknown handshape '" + key.handshape + "' (known in " + library.file + ": " + names + ")");
+        }
+}
+
+}  // namespace
+
 VerbPerformance synthesizeVerb(const VerbSources& sources, const std::string& verbName, VerbVersion version,
                                double subject, double object, const std::string& subjectField,
                                const std::string& objectField) {
+    VerbPerformance performance =
+        synthesizeUncheckedVerb(sources, verbName, version, subject, object, subjectField, objectField);
+    if (sources.handshapes) checkHandshapes(performance, *sources.handshapes);
+    return performance;
+}
+
+VerbPerformance synthesizeUncheckedVerb(const VerbSources& sources, const std::string& verbName, VerbVersion version,
+                                        double subject, double object, const std::string& subjectField,
+                                        const std::string& objectField) {
     const VerbDefinition& verb = sources.verbs->get(verbName);
     checkArcPosition(object, "<command line>", objectField);
     if (!verb.objectOnly()) checkArcPosition(subject, "<command line>", subjectField);
@@ -116,17 +170,24 @@ VerbPerformance synthesizeVerb(const VerbSources& sources, const std::string& ve
                 poses.emplace_back();
                 for (const VerbKeyframe& key : track) poses.back().push_back(key.pose);
             }
-            return performanceFromPoses(verb, version, subject, object, poses);
+            VerbPerformance performance = performanceFromPoses(verb, version, subject, object, poses);
+            performance.handshapeFile = sources.verbs->sourceFile;
+            return performance;
         }
         case VerbVersion::Point:
         case VerbVersion::Vector: {
             const VerbModel* model = sources.models ? sources.models->find(verb.name) : nullptr;
             if (!model)
-                throw InputError("<verb models>", 0, "verb",
+                throw InputError(sources.models && !sources.models->sourceFile.empty() ? sources.models->sourceFile
+                                                                                        : std::string("<verb models>"),
+                                 0, "verb",
                                  "no trained model for " + verb.name + "; run `signstim train CORPUS.csv --out MODELS.json`");
             const auto poses = version == VerbVersion::Point ? predictPoint(*model, subject, object)
                                                              : predictVector(*model, subject, object);
-            return performanceFromPoses(verb, version, subject, object, poses);
+            checkPredictedPoses(*model, sources.models->sourceFile, verb, subject, object, poses);
+            VerbPerformance performance = performanceFromPoses(verb, version, subject, object, poses);
+            performance.handshapeFile = sources.verbs->sourceFile;
+            return performance;
         }
         case VerbVersion::Animator: {
             const std::filesystem::path file = sources.animatorDir / animatorFileName(verb, subject, object);
@@ -183,14 +244,27 @@ std::string formatPerformanceJson(const VerbPerformance& performance) {
 VerbPerformance loadAnimatorPerformance(const std::filesystem::path& file, const VerbDefinition& verb, double subject,
                                         double object) {
     const JsonSource source = readJsonFile(file);
+    return withJsonErrors(source, [&] { return parseAnimatorPerformance(source, verb, subject, object); });
+}
+
+VerbPerformance parseAnimatorPerformance(const JsonSource& source, const VerbDefinition& verb, double subject,
+                                         double object) {
     const nlohmann::json& root = source.root;
     if (!root.is_object()) source.fail({}, "", "expected a JSON object");
+    if (const auto format = root.find("format"); format != root.end() && *format != "signstim-verb-keyframes")
+        source.failAt("/format", "expected \"signstim-verb-keyframes\", got " + format->dump() + " (a file of another kind?)");
+    if (const auto version = root.find("version");
+        version != root.end() && !(version->is_string() && parseVerbVersion(version->get<std::string>())))
+        source.failAt("/version", "expected the version the keyframes were made as: \"point\", \"vector\", \"animator\" "
+                                  "or \"uninflected\", got " + version->dump());
     if (root.value("verb", "") != verb.name)
         source.fail({"\"verb\""}, "/verb", "the file is for verb '" + root.value("verb", "") + "', expected " + verb.name);
     const auto positionMatches = [&](const char* key, double expected) {
         if (!root.contains(key) || !root[key].is_number() || std::abs(root[key].get<double>() - expected) > 1e-6)
             source.fail({std::string("\"") + key + "\""}, std::string("/") + key,
-                        std::string("expected ") + key + " " + positionText(expected) + " (the file name says so)");
+                        std::string("expected ") + key + " " + positionText(expected) + " (the file name says so)" +
+                            (root.contains(key) && root[key].is_number() ? ", got " + formatNumber(root[key].get<double>())
+                                                                          : std::string()));
     };
     if (!verb.objectOnly()) positionMatches("subject", subject);
     positionMatches("object", object);
@@ -200,6 +274,7 @@ VerbPerformance loadAnimatorPerformance(const std::filesystem::path& file, const
     performance.version = VerbVersion::Animator;
     performance.subject = verb.objectOnly() ? 0.0 : subject;
     performance.object = object;
+    performance.handshapeFile = source.file;
     for (auto it = root["hands"].begin(); it != root["hands"].end(); ++it)
         if (!parseHandSide(it.key()) || verb.handIndex(*parseHandSide(it.key())) < 0)
             source.fail({"\"hands\"", "\"" + it.key() + "\""}, "/hands/" + it.key(),
@@ -221,17 +296,19 @@ VerbPerformance loadAnimatorPerformance(const std::filesystem::path& file, const
             if (!key.is_object() || !key.contains("time") || !key["time"].is_number())
                 source.fail(keyAt, keyPointer + "/time", "expected a time in seconds");
             PerformanceKeyframe frame;
-            frame.timeSeconds = key["time"].get<double>();
+            frame.timeSeconds = source.number(key["time"], keyPointer + "/time", kKeyframeTimeRange);
             if ((k == 0 && frame.timeSeconds != 0.0) || (k > 0 && !(frame.timeSeconds > track.keyframes.back().timeSeconds)))
                 source.fail(keyAt, keyPointer + "/time", "times start at 0 and increase");
             std::vector<std::string> positionAt = keyAt;
             positionAt.push_back("\"position\"");
             if (!key.contains("position")) source.fail(keyAt, keyPointer + "/position", "missing field 'position'");
-            frame.pose.positionMm = readVector3(source, key["position"], positionAt, keyPointer + "/position");
+            frame.pose.positionMm = readVector3(source, key["position"], positionAt, keyPointer + "/position", kSigningSpacePositionRange);
             frame.pose.orientation = readOrientation(source, key, keyAt, keyPointer);
             if (!key.contains("handshape") || !key["handshape"].is_string() || key["handshape"].get<std::string>().empty())
                 source.fail(keyAt, keyPointer + "/handshape", "expected a handshape name");
             frame.handshape = key["handshape"].get<std::string>();
+            frame.handshapeField = keyPointer + "/handshape";
+            frame.handshapeLine = source.lineAt(frame.handshapeField);
             track.keyframes.push_back(std::move(frame));
         }
         performance.durationSeconds = std::max(performance.durationSeconds, track.keyframes.back().timeSeconds);

@@ -8,6 +8,7 @@
 //   VerbPerformance p = synthesizeVerb(sources, "ASK", VerbVersion::Point, 0.9, -0.6);
 //   for (double t = 0; t <= p.durationSeconds; t += 1 / 30.0)
 //       HandSample right = sampleHand(p.hands[0], t);
+#include "stimuli/handshapes.hpp"
 #include "stimuli/verb_models.hpp"
 #include "stimuli/verbs.hpp"
 
@@ -27,6 +28,9 @@ struct PerformanceKeyframe {
     double timeSeconds = 0.0;
     HandPose pose;
     std::string handshape;
+    // Where the handshape name was read (VerbPerformance::handshapeFile), for messages.
+    int handshapeLine = 0;
+    std::string handshapeField;  // JSON pointer
 };
 
 struct HandTrack {
@@ -41,6 +45,7 @@ struct VerbPerformance {
     double object = 0.0;
     double durationSeconds = 0.0;
     std::vector<HandTrack> hands;  // right first
+    std::string handshapeFile;     // the verbs file or the animator file the handshapes come from
 
     const HandTrack* hand(HandSide side) const;
 };
@@ -60,13 +65,24 @@ struct VerbSources {
     const VerbLibrary* verbs = nullptr;
     const TrainedVerbModels* models = nullptr;  // needed for point and vector
     std::filesystem::path animatorDir;          // scenes/animator, needed for animator
+    // When given, every handshape of the performance must be in it: an unknown one is refused
+    // naming the file, line and field it was read from.
+    const HandshapeLibrary* handshapes = nullptr;
 };
 
 // Throws InputError for an unknown verb, positions outside [-1, 1] (naming `subjectField` /
-// `objectField`), a verb without a trained model, or a missing animator file (naming it).
+// `objectField`), a verb without a trained model, a missing animator file (naming it), an
+// unknown handshape (when sources.handshapes is given), and a model that predicts a pose that
+// is not finite or outside the signing space (naming the models file): nothing non-finite is
+// ever returned.
 VerbPerformance synthesizeVerb(const VerbSources& sources, const std::string& verb, VerbVersion version,
                                double subject, double object, const std::string& subjectField = "--subject",
                                const std::string& objectField = "--object");
+
+// synthesizeVerb without the handshape check (what it runs first).
+VerbPerformance synthesizeUncheckedVerb(const VerbSources& sources, const std::string& verb, VerbVersion version,
+                                        double subject, double object, const std::string& subjectField = "--subject",
+                                        const std::string& objectField = "--object");
 
 // Citation times and handshapes around model poses [hand][keyframe]; expands `passes`.
 VerbPerformance performanceFromPoses(const VerbDefinition& verb, VerbVersion version, double subject, double object,
@@ -84,5 +100,7 @@ std::string animatorFileName(const VerbDefinition& verb, double subject, double 
 // is a valid starting point).
 VerbPerformance loadAnimatorPerformance(const std::filesystem::path& file, const VerbDefinition& verb, double subject,
                                         double object);
+VerbPerformance parseAnimatorPerformance(const JsonSource& source, const VerbDefinition& verb, double subject,
+                                         double object);
 
 }  // namespace signstim::stimuli

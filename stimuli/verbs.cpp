@@ -1,5 +1,6 @@
 #include "stimuli/verbs.hpp"
 
+#include "common/number_format.hpp"
 #include "stimuli/sora.hpp"
 
 #include <cmath>
@@ -44,14 +45,13 @@ std::string VerbLibrary::knownNames() const {
 }
 
 glm::dvec3 readVector3(const JsonSource& source, const nlohmann::json& value,
-                       const std::vector<std::string>& anchors, const std::string& field) {
+                       const std::vector<std::string>& anchors, const std::string& field, const NumberRange& range) {
     if (!value.is_array() || value.size() != 3) source.fail(anchors, field, "expected [x, y, z]");
     glm::dvec3 result;
     for (int i = 0; i < 3; ++i) {
         const nlohmann::json& element = value[static_cast<std::size_t>(i)];
-        if (!element.is_number() || !std::isfinite(element.get<double>()))
-            source.fail(anchors, field, "expected three finite numbers [x, y, z]");
-        result[i] = element.get<double>();
+        if (!element.is_number()) source.fail(anchors, field, "expected three numbers [x, y, z]");
+        result[i] = source.number(element, field + "/" + std::to_string(i), range);
     }
     return result;
 }
@@ -74,14 +74,13 @@ glm::dquat readOrientation(const JsonSource& source, const nlohmann::json& objec
         if (!q.is_array() || q.size() != 4) source.fail(at, field + "/orientation", "expected [w, x, y, z]");
         double v[4];
         for (std::size_t i = 0; i < 4; ++i) {
-            if (!q[i].is_number() || !std::isfinite(q[i].get<double>()))
-                source.fail(at, field + "/orientation", "expected four finite numbers [w, x, y, z]");
-            v[i] = q[i].get<double>();
+            if (!q[i].is_number()) source.fail(at, field + "/orientation", "expected four numbers [w, x, y, z]");
+            v[i] = source.number(q[i], field + "/orientation/" + std::to_string(i), NumberRange{-1.0, 1.0, ""});
         }
         const double norm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]);
         if (std::abs(norm - 1.0) > 1e-3)
             source.fail(at, field + "/orientation", "a unit quaternion [w, x, y, z] is required (length " +
-                                                        std::to_string(norm) + ")");
+                                                        formatNumber(norm) + ")");
         fromQuaternion = glm::normalize(glm::dquat(v[0], v[1], v[2], v[3]));
     }
     if (hasDirections) {
@@ -91,8 +90,8 @@ glm::dquat readOrientation(const JsonSource& source, const nlohmann::json& objec
         fingersAt.push_back("\"fingers\"");
         std::vector<std::string> palmAt = anchors;
         palmAt.push_back("\"palm\"");
-        const glm::dvec3 fingers = readVector3(source, object["fingers"], fingersAt, field + "/fingers");
-        const glm::dvec3 palm = readVector3(source, object["palm"], palmAt, field + "/palm");
+        const glm::dvec3 fingers = readVector3(source, object["fingers"], fingersAt, field + "/fingers", kDirectionComponentRange);
+        const glm::dvec3 palm = readVector3(source, object["palm"], palmAt, field + "/palm", kDirectionComponentRange);
         try {
             fromDirections = orientationFromFingersPalm(fingers, palm);
         } catch (const std::invalid_argument& e) {
@@ -103,7 +102,7 @@ glm::dquat readOrientation(const JsonSource& source, const nlohmann::json& objec
         const double degrees = rotationAngleBetween(*fromQuaternion, *fromDirections) * 180.0 / std::numbers::pi;
         if (degrees > 1.0) {
             source.fail(anchors, field,
-                        "\"orientation\" and \"fingers\"/\"palm\" disagree by " + std::to_string(degrees) +
+                        "\"orientation\" and \"fingers\"/\"palm\" disagree by " + formatNumber(degrees) +
                             "°; keep only one of them");
         }
     }
@@ -131,6 +130,8 @@ std::string readString(const JsonSource& source, const nlohmann::json& object, c
 }  // namespace
 
 VerbLibrary parseVerbLibrary(const JsonSource& source) {
+    return withJsonErrors(source, [&] {
+    source.checkFormat("signstim-verbs", 1);
     VerbLibrary library;
     library.sourceFile = source.file;
     const nlohmann::json& root = source.root;
@@ -191,18 +192,18 @@ VerbLibrary parseVerbLibrary(const JsonSource& source) {
                 keyAt.push_back("\"time\"");
                 VerbKeyframe frame;
                 const nlohmann::json& time = member(source, key, "time", keyAt, keyPointer);
-                if (!time.is_number() || !std::isfinite(time.get<double>()) || time.get<double>() < 0.0)
-                    source.fail(keyAt, keyPointer + "/time", "expected a time in seconds >= 0");
-                frame.timeSeconds = time.get<double>();
+                frame.timeSeconds = source.number(time, keyPointer + "/time", kKeyframeTimeRange);
                 if (k == 0 && frame.timeSeconds != 0.0) source.fail(keyAt, keyPointer + "/time", "the first keyframe is at time 0");
                 if (k > 0 && !(frame.timeSeconds > track.back().timeSeconds))
                     source.fail(keyAt, keyPointer + "/time", "keyframe times must increase");
                 std::vector<std::string> positionAt = keyAt;
                 positionAt.push_back("\"position\"");
                 frame.pose.positionMm = readVector3(source, member(source, key, "position", keyAt, keyPointer), positionAt,
-                                                    keyPointer + "/position");
+                                                    keyPointer + "/position", kSigningSpacePositionRange);
                 frame.pose.orientation = readOrientation(source, key, keyAt, keyPointer);
                 frame.handshape = readString(source, key, "handshape", keyAt, keyPointer);
+                frame.handshapeField = keyPointer + "/handshape";
+                frame.handshapeLine = source.lineAt(frame.handshapeField);
                 track.push_back(std::move(frame));
             }
             if (!verb.citation.empty()) {
@@ -213,22 +214,30 @@ VerbLibrary parseVerbLibrary(const JsonSource& source) {
             }
             verb.citation.push_back(std::move(track));
         }
+        // The whole verb, all passes, within the keyframe time range: SCOLD's 3 wags of 0.3 s
+        // are 0.9 s; 20 passes of a minute would render for 20 minutes.
+        const double total = verb.passes * verb.citation.front().back().timeSeconds;
+        if (!kKeyframeTimeRange.contains(total))
+            source.failAt(pointer + (item.contains("passes") ? "/passes" : "/citation"),
+                          "the verb lasts " + formatNumber(total) + " s in all (passes × the last keyframe's time); " +
+                              rangeMessage(kKeyframeTimeRange.minimum, kKeyframeTimeRange.maximum, kKeyframeTimeRange.unit, total));
         library.verbs.push_back(std::move(verb));
     }
     return library;
+    });
 }
 
 VerbLibrary loadVerbLibrary(const std::filesystem::path& path) { return parseVerbLibrary(readJsonFile(path)); }
 
 void checkHandshapeNames(const VerbLibrary& library, const std::function<bool(const std::string&)>& isKnown) {
-    for (const VerbDefinition& verb : library.verbs)
+    for (const VerbDefinition& verb : library.verbs) {
         for (std::size_t h = 0; h < verb.hands.size(); ++h)
             for (std::size_t k = 0; k < verb.citation[h].size(); ++k)
                 if (!isKnown(verb.citation[h][k].handshape))
-                    throw InputError(library.sourceFile, 0,
-                                     "/verbs/" + verb.name + "/citation/" + toString(verb.hands[h]) + "/" +
-                                         std::to_string(k) + "/handshape",
-                                     "unknown handshape '" + verb.citation[h][k].handshape + "'");
+                    throw InputError(library.sourceFile, verb.citation[h][k].handshapeLine,
+                                     verb.citation[h][k].handshapeField,
+                                     "unknown handshape '" + verb.citation[h][k].handshape + "' in " + verb.name);
+    }
 }
 
 }  // namespace signstim::stimuli

@@ -32,6 +32,8 @@ struct VerbKeyframe {
     double timeSeconds = 0.0;  // from the start of the verb
     HandPose pose;
     std::string handshape;     // a name of the handshape library (scenes/)
+    int handshapeLine = 0;     // its line and JSON pointer in the verbs file, for messages
+    std::string handshapeField;
 };
 
 struct VerbDefinition {
@@ -71,9 +73,11 @@ VerbLibrary parseVerbLibrary(const JsonSource& source);
 // naming the verb, hand and keyframe of the first unknown one.
 void checkHandshapeNames(const VerbLibrary& library, const std::function<bool(const std::string&)>& isKnown);
 
-// Reads a 3-vector field written as [x, y, z].
+// Reads a 3-vector field written as [x, y, z], each number finite and in `range` (positions:
+// kSigningSpacePositionRange; directions: kDirectionComponentRange). `field` is the JSON
+// pointer of the array; an element out of range is named by its own pointer and line.
 glm::dvec3 readVector3(const JsonSource& source, const nlohmann::json& value,
-                       const std::vector<std::string>& anchors, const std::string& field);
+                       const std::vector<std::string>& anchors, const std::string& field, const NumberRange& range);
 
 // An orientation written either as "orientation": [w, x, y, z] (unit quaternion) or as
 // "fingers": [x, y, z] plus "palm": [x, y, z] directions; when both are given they must agree

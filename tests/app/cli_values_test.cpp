@@ -134,6 +134,8 @@ TEST(CliValues, RangeIsInclusiveAndRefusesNaN) {
     expectRefused([] { requireInRange(350.0, 100.0, 300.0, "--hand-length", "mm"); }, "--hand-length",
                   "expected 100 to 300 mm, got '350'");
     expectRefused([] { requireInRange(-1.5, 0.0, 1.0, "--subject"); }, "--subject", "expected 0 to 1, got '-1.5'");
+    // Past the 6th digit: the message shows why (it printed 1 before).
+    expectRefused([] { requireInRange(1.0000001, 0.0, 1.0, "--subject"); }, "--subject", "expected 0 to 1, got '1.0000001'");
     EXPECT_THROW(requireInRange(std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0, "--x"), InputError);
 }
 

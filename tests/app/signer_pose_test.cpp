@@ -135,6 +135,22 @@ TEST(SignerPose, MappingFileNamesTheUsersBones) {
         out << "{\"bones\": {\"leftIndexDistal\": 3}}";
     }
     EXPECT_THROW(app::loadBoneMapping(path), InputError);
+    // The shared JSON reader: the line of the mistake, duplicate keys refused.
+    {
+        std::ofstream out(path);
+        out << "{\"bones\": {\n  \"leftIndexDistal\": \"a\",\n  \"rightLowerArm\": 3\n}}\n";
+    }
+    try {
+        app::loadBoneMapping(path);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.line(), 3) << e.what();
+    }
+    {
+        std::ofstream out(path);
+        out << "{\"bones\": {\n  \"leftIndexDistal\": \"a\",\n  \"leftIndexDistal\": \"b\"\n}}\n";
+    }
+    EXPECT_THROW(app::loadBoneMapping(path), InputError);
     std::remove(path.c_str());
 }
 

@@ -73,6 +73,8 @@ TEST(VerbCli, PointJsonIsAStartingAnimatorFile) {
     const fs::path scenes = workDir() / "scenes";
     fs::create_directories(scenes / "animator");
     fs::copy_file(kScenes / "verbs.json", scenes / "verbs.json", fs::copy_options::overwrite_existing);
+    // The verb's handshapes are checked against the scenes' handshape file.
+    fs::copy_file(kScenes / "handshapes.json", scenes / "handshapes.json", fs::copy_options::overwrite_existing);
     const CommandResult point = run("verb GIVE --subject 0.3 --object -0.9 --version point --json");
     ASSERT_EQ(point.status, 0) << point.output;
     std::ofstream(scenes / "animator" / "GIVE_s0.3_o-0.9.json") << point.output;
