@@ -45,7 +45,7 @@ private:
             source_.fail({"\"locations\""}, "/locations", "expected {\"chin\": [x, y, z], ...} in signing-space mm");
         for (const auto& [name, value] : source_.root["locations"].items()) {
             const std::vector<std::string> anchors{"\"locations\"", "\"" + name + "\""};
-            const glm::dvec3 p = readVector3(source_, value, anchors, "/locations/" + name);
+            const glm::dvec3 p = readVector3(source_, value, anchors, "/locations/" + name, kSigningSpacePositionRange);
             for (int i = 0; i < 3; ++i)
                 if (std::abs(p[i]) > kLocationLimitMm)
                     source_.fail(anchors, "/locations/" + name,
@@ -176,12 +176,12 @@ private:
         } else {
             std::vector<std::string> at = keyAt;
             at.push_back("\"position\"");
-            target = readVector3(source_, key["position"], at, keyPointer + "/position");
+            target = readVector3(source_, key["position"], at, keyPointer + "/position", kSigningSpacePositionRange);
         }
         if (key.contains("offset")) {
             std::vector<std::string> at = keyAt;
             at.push_back("\"offset\"");
-            const glm::dvec3 offset = readVector3(source_, key["offset"], at, keyPointer + "/offset");
+            const glm::dvec3 offset = readVector3(source_, key["offset"], at, keyPointer + "/offset", kSigningSpacePositionRange);
             if (glm::length(offset) > 400.0)
                 source_.fail(at, keyPointer + "/offset", "an offset from a location is at most 400 mm");
             target += offset;
