@@ -1,10 +1,10 @@
 // `signstim avatar build`, `signstim handshapes --gallery`, `signstim pose`: the default signer,
-// its handshape gallery and one posture of it (docs: app/avatar_builder.hpp, signer_pose.hpp).
-#include "app/avatar_builder.hpp"
-#include "app/avatar_render.hpp"
+// its handshape gallery and one posture of it (docs: signer/avatar_builder.hpp, signer_pose.hpp).
+#include "signer/avatar_builder.hpp"
+#include "signer/avatar_render.hpp"
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
-#include "app/signer_pose.hpp"
+#include "signer/signer_pose.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "renderer/frame_sink.hpp"
@@ -23,6 +23,9 @@
 #include <string>
 
 namespace signstim::app {
+
+// The signer's room (avatar, rig, clips) is this command line's main collaborator.
+using namespace signstim::signer;
 namespace {
 
 struct AvatarSource {

@@ -145,4 +145,20 @@ double requireInRange(double value, double minimum, double maximum, const std::s
     return value;
 }
 
+signer::GalleryView parseGalleryView(const std::string& text) {
+    if (text == "palm") return {0.0f, 0.0f};
+    if (text == "thumb") return {90.0f, 0.0f};
+    if (text == "little") return {-90.0f, 0.0f};
+    if (text == "back") return {180.0f, 0.0f};
+    if (text == "top") return {0.0f, 60.0f};
+    if (text.find_first_of("0123456789") == std::string::npos) {
+        throw commandLineError("--view", "expected palm, thumb, little, back, top or AZIMUTH,ELEVATION in degrees, got '" +
+                                             text + "'");
+    }
+    const std::vector<float> values = parseNumbers(text, "--view", 2, 2);
+    signer::GalleryView view{values[0], values[1]};
+    requireInRange(view.elevationDeg, -89.0f, 89.0f, "--view elevation");
+    return view;
+}
+
 }  // namespace signstim::app

@@ -3,6 +3,7 @@
 // '#ffffff'): one parser each, shared by every command. Each throws
 // InputError("<command line>", 0, FLAG, "expected ..., got '...'") (exit status 1: usage).
 #include "common/error.hpp"
+#include "signer/avatar_render.hpp"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -55,5 +56,9 @@ std::uint32_t requireSampleCount(std::uint32_t count, const std::string& flag);
 // ("mm" -> "expected 100 to 300 mm, got 350").
 double requireInRange(double value, double minimum, double maximum, const std::string& flag,
                       const std::string& unit = "");
+
+// Named views of `handshapes --view`: palm, thumb, little, back, top; or "AZ,EL" in degrees.
+// Throws InputError naming --view for anything else.
+signer::GalleryView parseGalleryView(const std::string& text);
 
 }  // namespace signstim::app

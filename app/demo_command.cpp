@@ -1,11 +1,11 @@
 // `signstim demo`: the main job until the study composer exists — the most complete
 // demonstration the project can render: the handshape gallery, and every indicating verb in
 // its four versions side by side (SPEC §4.3 layout), with a manifest listing every file.
-#include "app/avatar_render.hpp"
+#include "signer/avatar_render.hpp"
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
-#include "app/signer_pose.hpp"
-#include "app/verb_render.hpp"
+#include "signer/signer_pose.hpp"
+#include "signer/verb_render.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/sha256.hpp"
@@ -31,6 +31,9 @@
 #include <unistd.h>
 
 namespace signstim::app {
+
+// The signer's room (avatar, rig, clips) is this command line's main collaborator.
+using namespace signstim::signer;
 namespace {
 
 namespace fs = std::filesystem;

@@ -1,9 +1,9 @@
 // `signstim train`, `signstim verb`, `signstim evaluate`, `signstim reference-corpus`:
 // the indicating verbs of SPEC §3 (Huenerfauth, Lu & Kacorri 2015).
-#include "app/avatar_render.hpp"
+#include "signer/avatar_render.hpp"
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
-#include "app/verb_render.hpp"
+#include "signer/verb_render.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "renderer/frame_sink.hpp"
@@ -25,6 +25,9 @@
 #include <string>
 
 namespace signstim::app {
+
+// The signer's room (avatar, rig, clips) is this command line's main collaborator.
+using namespace signstim::signer;
 namespace {
 
 using namespace signstim::stimuli;

@@ -253,7 +253,7 @@ std::optional<glm::dvec3> touchPointMm(const hand::HandModel& model, const hand:
 glm::dvec3 palmOriginForTouch(const glm::dvec3& targetMm, const glm::dquat& orientation, const glm::dvec3& touchInPalmMm) {
     // Signing-space orientations are written with y = z × x computed in these (physically
     // left-handed) coordinates, so the hand model's y (toward the thumb) appears as -y here
-    // (app/signer_pose.hpp, handFrameFromSigningSpace).
+    // (signer/signer_pose.hpp, handFrameFromSigningSpace).
     const glm::dvec3 local(touchInPalmMm.x, -touchInPalmMm.y, touchInPalmMm.z);
     return targetMm - orientation * local;
 }

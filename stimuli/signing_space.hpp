@@ -12,7 +12,7 @@
 // forward): it is the mirror image of the avatar's right-handed body frame (+x the signer's
 // left). Coordinates are used as written; orientations are built from palm and finger
 // directions with y = z × x computed in these coordinates, and the app converts them to
-// the body frame keeping the palm and finger directions (app/signer_pose.hpp,
+// the body frame keeping the palm and finger directions (signer/signer_pose.hpp,
 // handFrameFromSigningSpace).
 #include <glm/vec3.hpp>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // Frames of the signer for the avatar commands and their golden tests: the handshape gallery
 // (one hand, close-up, same viewpoint for every shape) and a posed signer (waist-up camera).
-#include "app/signer_pose.hpp"
+#include "signer/signer_pose.hpp"
 #include "renderer/frame.hpp"
 #include "renderer/renderer.hpp"
 #include "stimuli/handshapes.hpp"
@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 
-namespace signstim::app {
+namespace signstim::signer {
 
 // Sign-language video practice: plain, medium background the dark top and the skin both
 // stand out against (linear RGB of sRGB ≈ (0.55, 0.62, 0.68)).
@@ -29,10 +29,6 @@ struct GalleryView {
     float azimuthDeg = 0.0f;
     float elevationDeg = 0.0f;
 };
-// Named views of `handshapes --view`: palm, thumb, little, back, top; or "AZ,EL" in degrees.
-// Throws InputError naming --view for anything else.
-GalleryView parseGalleryView(const std::string& text);
-
 // A grid of every handshape in `library` on the right hand, presented palm-forward beside the
 // shoulder, each labelled with its name, all seen from `view` (default: straight at the palm).
 // `sceneHandle` is the avatar's Renderer handle.
@@ -47,4 +43,4 @@ render::Frame postureFrame(const render::Scene& avatar, const SignerRig& rig, in
 // The default signer committed in scenes/ (scenes/avatar/signer.glb).
 std::filesystem::path defaultAvatarPath(const std::filesystem::path& scenesDir);
 
-}  // namespace signstim::app
+}  // namespace signstim::signer

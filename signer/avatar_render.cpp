@@ -1,6 +1,5 @@
-#include "app/avatar_render.hpp"
+#include "signer/avatar_render.hpp"
 
-#include "app/cli_values.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -9,7 +8,7 @@
 
 #include <vector>
 
-namespace signstim::app {
+namespace signstim::signer {
 
 render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
                                               const std::string& device) {
@@ -32,22 +31,6 @@ render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect) {
     camera.target = chestWorld + glm::vec3(0.0f, 0.06f, 0.0f);
     camera.eye = camera.target + glm::vec3(0.0f, 0.03f, distance);
     return camera;
-}
-
-GalleryView parseGalleryView(const std::string& text) {
-    if (text == "palm") return {0.0f, 0.0f};
-    if (text == "thumb") return {90.0f, 0.0f};
-    if (text == "little") return {-90.0f, 0.0f};
-    if (text == "back") return {180.0f, 0.0f};
-    if (text == "top") return {0.0f, 60.0f};
-    if (text.find_first_of("0123456789") == std::string::npos) {
-        throw commandLineError("--view", "expected palm, thumb, little, back, top or AZIMUTH,ELEVATION in degrees, got '" +
-                                             text + "'");
-    }
-    const std::vector<float> values = parseNumbers(text, "--view", 2, 2);
-    GalleryView view{values[0], values[1]};
-    requireInRange(view.elevationDeg, -89.0f, 89.0f, "--view elevation");
-    return view;
 }
 
 render::Frame galleryFrame(const SignerRig& rig, int sceneHandle,
@@ -107,4 +90,4 @@ std::filesystem::path defaultAvatarPath(const std::filesystem::path& scenesDir) 
     return scenesDir / "avatar" / "signer.glb";
 }
 
-}  // namespace signstim::app
+}  // namespace signstim::signer

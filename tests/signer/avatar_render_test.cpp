@@ -1,16 +1,17 @@
 // The committed default signer is the output of `signstim avatar build`; golden images of the
 // handshape gallery and a posed signer, rendered with Vulkan validation on (any message
 // fails the test). Golden comparison: tests/renderer/vk_golden.hpp (exact, then tolerance;
-// SIGNSTIM_UPDATE_GOLDEN=1 rewrites tests/app/golden/*.png).
-#include "app/avatar_builder.hpp"
-#include "app/avatar_render.hpp"
-#include "app/signer_pose.hpp"
+// SIGNSTIM_UPDATE_GOLDEN=1 rewrites tests/signer/golden/*.png).
+#include "signer/avatar_builder.hpp"
+#include "signer/avatar_render.hpp"
+#include "signer/signer_pose.hpp"
 #include "common/error.hpp"
 #include "renderer/gltf_loader.hpp"
 #include "renderer/gltf_writer.hpp"
 #include "renderer/renderer.hpp"
+#include "app/cli_values.hpp"
 #include "stimuli/handshapes.hpp"
-#include "tests/app/avatar_variants.hpp"
+#include "tests/signer/avatar_variants.hpp"
 #include "tests/renderer/vk_golden.hpp"
 
 #include <gtest/gtest.h>
@@ -43,7 +44,7 @@ render::RendererOptions options(std::uint32_t width, std::uint32_t height) {
     o.width = width;
     o.height = height;
     o.msaa = 4;
-    o.background = app::kSignerBackground;
+    o.background = signer::kSignerBackground;
     o.validation = true;
     return o;
 }
@@ -57,7 +58,7 @@ void expectNoValidationMessages(const render::Renderer& renderer) {
 TEST(AvatarFile, CommittedAvatarIsTheBuildersOutputByteForByte) {
     const std::string committed = readBytes(kScenes + "/avatar/signer.glb");
     ASSERT_FALSE(committed.empty()) << "scenes/avatar/signer.glb missing";
-    const std::string built = render::encodeGltf(app::buildDefaultAvatar(), true);
+    const std::string built = render::encodeGltf(signer::buildDefaultAvatar(), true);
     EXPECT_TRUE(built == committed)
         << "scenes/avatar/signer.glb is stale: run `signstim avatar build --out scenes/avatar/signer.glb`";
     EXPECT_LT(committed.size(), 2u * 1024u * 1024u);
@@ -65,31 +66,31 @@ TEST(AvatarFile, CommittedAvatarIsTheBuildersOutputByteForByte) {
 
 TEST(AvatarFile, CommittedAvatarLoadsAndIsAcceptedAsASigner) {
     const render::Scene scene = render::loadGltf(kScenes + "/avatar/signer.glb");
-    EXPECT_NO_THROW(app::SignerRig rig(scene));
-    for (const std::string& bone : app::requiredAvatarBones()) EXPECT_GE(scene.findNode(bone), 0) << bone;
+    EXPECT_NO_THROW(signer::SignerRig rig(scene));
+    for (const std::string& bone : signer::requiredAvatarBones()) EXPECT_GE(scene.findNode(bone), 0) << bone;
 }
 
 TEST(AvatarGolden, HandshapeGallery) {
     const render::Scene scene = render::loadGltf(kScenes + "/avatar/signer.glb");
-    const app::SignerRig rig(scene);
+    const signer::SignerRig rig(scene);
     const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", rig.handModel());
     const std::uint32_t columns = 7, cell = 64;
     const auto rows = static_cast<std::uint32_t>((library.shapes.size() + columns - 1) / columns);
     render::Renderer renderer(options(columns * cell, rows * cell));
     const int handle = renderer.addScene(scene);
     render::Image image;
-    renderer.render(app::galleryFrame(rig, handle, library, columns), image);
+    renderer.render(signer::galleryFrame(rig, handle, library, columns), image);
     expectNoValidationMessages(renderer);
-    const std::string problem = render::testing::compareWithGolden(image, "../../app/golden/handshape_gallery");
+    const std::string problem = render::testing::compareWithGolden(image, "../../signer/golden/handshape_gallery");
     EXPECT_TRUE(problem.empty()) << problem;
 }
 
 TEST(AvatarGallery, ViewsOrbitTheHandAtTheSameDistance) {
     const render::Scene scene = render::loadGltf(kScenes + "/avatar/signer.glb");
-    const app::SignerRig rig(scene);
+    const signer::SignerRig rig(scene);
     const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", rig.handModel());
     const auto offset = [&](const std::string& view) {
-        const render::Frame frame = app::galleryFrame(rig, 0, library, 7, app::parseGalleryView(view));
+        const render::Frame frame = signer::galleryFrame(rig, 0, library, 7, app::parseGalleryView(view));
         return frame.views.at(0).camera.eye - frame.views.at(0).camera.target;
     };
     const glm::vec3 palm = offset("palm"), thumb = offset("thumb"), back = offset("back"), top = offset("top");
@@ -111,7 +112,7 @@ TEST(AvatarGallery, TheHandIsInSightFromEveryNamedView) {
     // From behind, the signer's own body lies between the camera and the hand: the near plane
     // must clip it. Skin (red over green over blue, not dark) must fill a good part of the cell.
     const render::Scene scene = render::loadGltf(kScenes + "/avatar/signer.glb");
-    const app::SignerRig rig(scene);
+    const signer::SignerRig rig(scene);
     stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", rig.handModel());
     library.shapes = {library.at("5")};
     render::Renderer renderer(options(96, 96));
@@ -119,7 +120,7 @@ TEST(AvatarGallery, TheHandIsInSightFromEveryNamedView) {
     std::map<std::string, std::size_t> skin;
     for (const char* view : {"palm", "thumb", "little", "back", "top"}) {
         render::Image image;
-        renderer.render(app::galleryFrame(rig, handle, library, 1, app::parseGalleryView(view)), image);
+        renderer.render(signer::galleryFrame(rig, handle, library, 1, app::parseGalleryView(view)), image);
         for (std::size_t i = 0; i < image.bytes.size(); i += 4) {
             const int r = image.bytes[i], g = image.bytes[i + 1], b = image.bytes[i + 2];
             if (r > 90 && r > g + 15 && g > b) ++skin[view];
@@ -142,12 +143,12 @@ TEST(AvatarGallery, AnAvatarInAnotherRestPoseAndFacingRendersTheSameSigning) {
     test::turnRoots(changed, glm::angleAxis(glm::radians(180.0f), glm::vec3(0, 1, 0)));
     const std::filesystem::path file = std::filesystem::temp_directory_path() / "signstim_turned_signer.glb";
     render::writeGltf(changed, file);
-    const render::Scene user = app::loadSignerAvatar(file);
+    const render::Scene user = signer::loadSignerAvatar(file);
     std::filesystem::remove(file);
     const render::Scene standard = render::loadGltf(kScenes + "/avatar/signer.glb");
-    const app::SignerRig userRig(user), standardRig(standard);
+    const signer::SignerRig userRig(user), standardRig(standard);
     const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", standardRig.handModel());
-    app::SignerPosture posture;
+    signer::SignerPosture posture;
     posture.rightHand = library.at("B").controls;
     posture.leftHand = library.at("5").controls;
     posture.rightWrist = standardRig.presentingTarget(hand::Side::Right);
@@ -155,10 +156,10 @@ TEST(AvatarGallery, AnAvatarInAnotherRestPoseAndFacingRendersTheSameSigning) {
     std::array<render::Image, 2> images;
     for (int i = 0; i < 2; ++i) {
         const render::Scene& scene = i == 0 ? user : standard;
-        const app::SignerRig& rig = i == 0 ? userRig : standardRig;
+        const signer::SignerRig& rig = i == 0 ? userRig : standardRig;
         render::Renderer renderer(options(160, 160));
         const int handle = renderer.addScene(scene);
-        renderer.render(app::postureFrame(scene, rig, handle, posture, 1.0f), images[i]);
+        renderer.render(signer::postureFrame(scene, rig, handle, posture, 1.0f), images[i]);
         expectNoValidationMessages(renderer);
     }
     ASSERT_EQ(images[0].bytes.size(), images[1].bytes.size());
@@ -175,23 +176,23 @@ TEST(AvatarGallery, AnAvatarInAnotherRestPoseAndFacingRendersTheSameSigning) {
 
 TEST(AvatarGolden, PosedSigner) {
     const render::Scene scene = render::loadGltf(kScenes + "/avatar/signer.glb");
-    const app::SignerRig rig(scene);
+    const signer::SignerRig rig(scene);
     const stimuli::HandshapeLibrary library = stimuli::loadHandshapes(kScenes + "/handshapes.json", rig.handModel());
-    app::SignerPosture posture;
+    signer::SignerPosture posture;
     posture.rightHand = library.at("A").controls;
     posture.rightWrist = rig.presentingTarget(hand::Side::Right);
     posture.leftHand = library.at("5").controls;
-    posture.leftWrist = hand::ArmTarget{app::bodyFromSigningSpace({-150.0f, -80.0f, 300.0f}),
+    posture.leftWrist = hand::ArmTarget{signer::bodyFromSigningSpace({-150.0f, -80.0f, 300.0f}),
                                         rig.presentingTarget(hand::Side::Left).handRotation};
-    posture.gazeMm = app::bodyFromSigningSpace({300.0f, 0.0f, 500.0f});
+    posture.gazeMm = signer::bodyFromSigningSpace({300.0f, 0.0f, 500.0f});
     render::Renderer renderer(options(256, 256));
     const int handle = renderer.addScene(scene);
-    app::PoseReport report;
+    signer::PoseReport report;
     render::Image image;
-    renderer.render(app::postureFrame(scene, rig, handle, posture, 1.0f, &report), image);
+    renderer.render(signer::postureFrame(scene, rig, handle, posture, 1.0f, &report), image);
     expectNoValidationMessages(renderer);
     EXPECT_TRUE(report.right.reachable);
     EXPECT_TRUE(report.left.reachable);
-    const std::string problem = render::testing::compareWithGolden(image, "../../app/golden/posed_signer");
+    const std::string problem = render::testing::compareWithGolden(image, "../../signer/golden/posed_signer");
     EXPECT_TRUE(problem.empty()) << problem;
 }

@@ -1,4 +1,4 @@
-#include "app/signer_pose.hpp"
+#include "signer/signer_pose.hpp"
 
 #include "stimuli/json_source.hpp"
 
@@ -15,7 +15,7 @@
 #include <cmath>
 #include <functional>
 
-namespace signstim::app {
+namespace signstim::signer {
 namespace {
 
 constexpr float kMToMm = 1000.0f;
@@ -464,4 +464,4 @@ render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report, c
     return pose;
 }
 
-}  // namespace signstim::app
+}  // namespace signstim::signer

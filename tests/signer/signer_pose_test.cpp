@@ -1,9 +1,9 @@
 // Posing the signer: wrists land on their targets, fingers follow the hand model, bring-your-
 // own skeletons are mapped or refused with the list of missing bones.
-#include "app/avatar_builder.hpp"
-#include "app/signer_pose.hpp"
+#include "signer/avatar_builder.hpp"
+#include "signer/signer_pose.hpp"
 #include "common/error.hpp"
-#include "tests/app/avatar_variants.hpp"
+#include "tests/signer/avatar_variants.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -18,20 +18,20 @@ using namespace signstim;
 
 namespace {
 const render::Scene& avatar() {
-    static const render::Scene scene = app::buildDefaultAvatar();
+    static const render::Scene scene = signer::buildDefaultAvatar();
     return scene;
 }
 }  // namespace
 
 TEST(SignerPose, WristsLandOnTheirTargetsAndFingersFollowTheHandModel) {
     const render::Scene& s = avatar();
-    const app::SignerRig rig(s);
-    app::SignerPosture posture;
+    const signer::SignerRig rig(s);
+    signer::SignerPosture posture;
     posture.rightHand.fingers[0].bend = 0.6f;
     posture.rightHand.thumb.bendDeg = 60.0f;
     posture.rightWrist = rig.presentingTarget(hand::Side::Right);
     posture.leftWrist = hand::ArmTarget{{120, -50, 280}, glm::quat(1, 0, 0, 0)};
-    app::PoseReport report;
+    signer::PoseReport report;
     const render::Pose pose = rig.pose(posture, &report);
     std::vector<glm::mat4> world;
     render::computeWorldTransforms(s, pose, world);
@@ -60,10 +60,10 @@ TEST(SignerPose, WristsLandOnTheirTargetsAndFingersFollowTheHandModel) {
 
 TEST(SignerPose, GazeTurnsHeadAndEyesTowardThePoint) {
     const render::Scene& s = avatar();
-    const app::SignerRig rig(s);
-    app::SignerPosture posture;
+    const signer::SignerRig rig(s);
+    signer::SignerPosture posture;
     posture.gazeMm = glm::vec3(400, 100, 500);  // to the signer's left
-    app::PoseReport report;
+    signer::PoseReport report;
     const render::Pose pose = rig.pose(posture, &report);
     std::vector<glm::mat4> world;
     render::computeWorldTransforms(s, pose, world);
@@ -76,10 +76,10 @@ TEST(SignerPose, GazeTurnsHeadAndEyesTowardThePoint) {
 }
 
 TEST(SignerPose, SigningSpaceIsTheMirrorOfTheBodyFrame) {
-    EXPECT_EQ(app::bodyFromSigningSpace(glm::vec3(100, 20, 300)), glm::vec3(-100, 20, 300));
+    EXPECT_EQ(signer::bodyFromSigningSpace(glm::vec3(100, 20, 300)), glm::vec3(-100, 20, 300));
     // A rotation about the vertical axis turns the other way in the mirrored frame.
     const glm::quat yaw = glm::angleAxis(0.5f, glm::vec3(0, 1, 0));
-    EXPECT_LT(hand::rotationAngleDeg(app::bodyFromSigningSpace(yaw), glm::angleAxis(-0.5f, glm::vec3(0, 1, 0))), 1e-3f);
+    EXPECT_LT(hand::rotationAngleDeg(signer::bodyFromSigningSpace(yaw), glm::angleAxis(-0.5f, glm::vec3(0, 1, 0))), 1e-3f);
 }
 
 TEST(SignerPose, HandFrameFromSigningSpaceKeepsPalmAndFingerDirections) {
@@ -89,7 +89,7 @@ TEST(SignerPose, HandFrameFromSigningSpaceKeepsPalmAndFingerDirections) {
     const glm::vec3 fingers = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
     const glm::vec3 palm = glm::normalize(glm::cross(glm::vec3(0.0f, 0.0f, 1.0f), fingers));
     const glm::quat signing = glm::quat_cast(glm::mat3(palm, glm::cross(fingers, palm), fingers));
-    const glm::mat3 body = glm::mat3_cast(app::handFrameFromSigningSpace(signing));
+    const glm::mat3 body = glm::mat3_cast(signer::handFrameFromSigningSpace(signing));
     const auto mirror = [](glm::vec3 v) { return glm::vec3(-v.x, v.y, v.z); };
     EXPECT_LT(glm::distance(body[0], mirror(palm)), 1e-5f);
     EXPECT_LT(glm::distance(body[2], mirror(fingers)), 1e-5f);
@@ -102,7 +102,7 @@ TEST(SignerPose, IncompleteSkeletonIsRefusedListingEveryMissingBone) {
     s.nodes[s.findNode("leftIndexDistal")].name = "L_index_3";
     s.nodes[s.findNode("rightLowerArm")].name = "forearm.R";
     try {
-        app::SignerRig rig(s);
+        signer::SignerRig rig(s);
         FAIL() << "accepted an incomplete skeleton";
     } catch (const InputError& e) {
         const std::string what = e.what();
@@ -122,10 +122,10 @@ TEST(SignerPose, MappingFileNamesTheUsersBones) {
         std::ofstream out(path);
         out << R"({"bones": {"leftIndexDistal": "L_index_3", "rightLowerArm": "forearm.R"}})";
     }
-    const app::BoneMapping mapping = app::loadBoneMapping(path);
-    const app::SignerRig mapped(s, mapping);
-    const app::SignerRig original(avatar());
-    app::SignerPosture posture;
+    const signer::BoneMapping mapping = signer::loadBoneMapping(path);
+    const signer::SignerRig mapped(s, mapping);
+    const signer::SignerRig original(avatar());
+    signer::SignerPosture posture;
     posture.rightWrist = original.presentingTarget(hand::Side::Right);
     const render::Pose a = mapped.pose(posture), b = original.pose(posture);
     for (std::size_t i = 0; i < a.local.size(); ++i)
@@ -134,14 +134,14 @@ TEST(SignerPose, MappingFileNamesTheUsersBones) {
         std::ofstream out(path);
         out << "{\"bones\": {\"leftIndexDistal\": 3}}";
     }
-    EXPECT_THROW(app::loadBoneMapping(path), InputError);
+    EXPECT_THROW(signer::loadBoneMapping(path), InputError);
     // The shared JSON reader: the line of the mistake, duplicate keys refused.
     {
         std::ofstream out(path);
         out << "{\"bones\": {\n  \"leftIndexDistal\": \"a\",\n  \"rightLowerArm\": 3\n}}\n";
     }
     try {
-        app::loadBoneMapping(path);
+        signer::loadBoneMapping(path);
         ADD_FAILURE() << "no error";
     } catch (const InputError& e) {
         EXPECT_EQ(e.line(), 3) << e.what();
@@ -150,7 +150,7 @@ TEST(SignerPose, MappingFileNamesTheUsersBones) {
         std::ofstream out(path);
         out << "{\"bones\": {\n  \"leftIndexDistal\": \"a\",\n  \"leftIndexDistal\": \"b\"\n}}\n";
     }
-    EXPECT_THROW(app::loadBoneMapping(path), InputError);
+    EXPECT_THROW(signer::loadBoneMapping(path), InputError);
     std::remove(path.c_str());
 }
 
@@ -165,8 +165,8 @@ TEST(SignerPose, RetargetingThroughTheRestPoseIgnoresTheUsersBoneAxes) {
         s.nodes[child].rest.translation = glm::inverse(extra) * s.nodes[child].rest.translation;
         s.nodes[child].rest.rotation = glm::inverse(extra) * s.nodes[child].rest.rotation;
     }
-    const app::SignerRig changed(s), original(avatar());
-    app::SignerPosture posture;
+    const signer::SignerRig changed(s), original(avatar());
+    signer::SignerPosture posture;
     posture.rightWrist = original.presentingTarget(hand::Side::Right);
     std::vector<glm::mat4> wa, wb;
     render::computeWorldTransforms(s, changed.pose(posture), wa);
@@ -180,7 +180,7 @@ namespace {
 // The required bones and the forearm twist bones.
 const std::vector<std::string>& comparedBones() {
     static const std::vector<std::string> bones = [] {
-        std::vector<std::string> b = app::requiredSignerBones();
+        std::vector<std::string> b = signer::requiredSignerBones();
         for (const char* twist : {"leftForearmTwistMid", "leftForearmTwistWrist", "rightForearmTwistMid", "rightForearmTwistWrist"})
             b.emplace_back(twist);
         return b;
@@ -189,7 +189,7 @@ const std::vector<std::string>& comparedBones() {
 }
 
 // World transforms of comparedBones(), in that order.
-std::vector<glm::mat4> posedJoints(const render::Scene& s, const app::SignerRig& rig, const app::SignerPosture& posture) {
+std::vector<glm::mat4> posedJoints(const render::Scene& s, const signer::SignerRig& rig, const signer::SignerPosture& posture) {
     std::vector<glm::mat4> world;
     render::computeWorldTransforms(s, rig.pose(posture), world);
     std::vector<glm::mat4> joints;
@@ -205,9 +205,9 @@ TEST(SignerPose, AnyRestPoseIsMeasuredFromTheSkeleton) {
     // where the default signer's does, turned the same way.
     render::Scene s = avatar();
     test::useAnotherRestPose(s);
-    const app::SignerRig changed(s), original(avatar());
+    const signer::SignerRig changed(s), original(avatar());
     for (int variant = 0; variant < 2; ++variant) {
-        app::SignerPosture posture;
+        signer::SignerPosture posture;
         if (variant == 1) {
             posture.rightWrist = original.presentingTarget(hand::Side::Right);
             posture.leftWrist = hand::ArmTarget{{120, -50, 280}, glm::quat(1, 0, 0, 0)};
@@ -230,7 +230,7 @@ TEST(SignerPose, AnAvatarFacingAnotherWayIsTurnedToFaceForward) {
     for (float degrees : {180.0f, 90.0f, -35.0f}) {
         render::Scene s = avatar();
         test::turnRoots(s, glm::angleAxis(glm::radians(degrees), glm::vec3(0, 1, 0)));
-        const float turned = app::faceAvatarForward(s);
+        const float turned = signer::faceAvatarForward(s);
         EXPECT_NEAR(std::remainder(turned + degrees, 360.0f), 0.0f, 1e-3f) << degrees << " turned by " << turned;
         std::vector<glm::mat4> world;
         render::computeWorldTransforms(s, render::restPose(s), world);
@@ -238,7 +238,7 @@ TEST(SignerPose, AnAvatarFacingAnotherWayIsTurnedToFaceForward) {
             ASSERT_LT(glm::length(glm::vec3(world[i][3]) - glm::vec3(expected[i][3])), 1e-5f) << s.nodes[i].name;
     }
     render::Scene forward = avatar();
-    EXPECT_EQ(app::faceAvatarForward(forward), 0.0f) << "the default signer already faces +Z";
+    EXPECT_EQ(signer::faceAvatarForward(forward), 0.0f) << "the default signer already faces +Z";
 }
 
 TEST(SignerPose, AnAvatarNotStandingUprightIsRefused) {
@@ -247,7 +247,7 @@ TEST(SignerPose, AnAvatarNotStandingUprightIsRefused) {
         s.sourceName = "lying.glb";
         test::turnRoots(s, glm::angleAxis(glm::radians(90.0f), axis));
         try {
-            app::faceAvatarForward(s);
+            signer::faceAvatarForward(s);
             ADD_FAILURE() << "accepted an avatar turned about " << axis.x << "," << axis.y << "," << axis.z;
         } catch (const InputError& e) {
             const std::string message = e.what();
@@ -282,8 +282,8 @@ TEST(SignerPose, TheLastBoneOfADigitAimsOnlyAtALeafThatContinuesIt) {
     addChild("rightMiddleDistal", "rightMiddleDistal_end", {0.0f, 0.0f, tipM});  // hand bones run along +z
     addChild("rightRingDistal", "ring", {0.0f, 0.012f, 0.001f});
     test::swingRest(s, "rightMiddleDistal", "rightMiddleDistal_end", glm::vec3(0, 1, 0), 35.0f);
-    const app::SignerRig changed(s), original(avatar());
-    app::SignerPosture posture;
+    const signer::SignerRig changed(s), original(avatar());
+    signer::SignerPosture posture;
     posture.rightWrist = original.presentingTarget(hand::Side::Right);
     posture.rightHand.fingers[1].hook = 0.5f;
     const std::vector<glm::mat4> a = posedJoints(s, changed, posture), b = posedJoints(avatar(), original, posture);
@@ -298,7 +298,7 @@ TEST(SignerPose, ABoneOfNoLengthIsRefusedNamingIt) {
     s.sourceName = "flat.glb";
     s.nodes[s.findNode("rightIndexIntermediate")].rest.translation = glm::vec3(0.0f);
     try {
-        const app::SignerRig rig(s);
+        const signer::SignerRig rig(s);
         ADD_FAILURE() << "accepted a skeleton with a bone of no length";
     } catch (const InputError& e) {
         const std::string message = e.what();
@@ -309,8 +309,8 @@ TEST(SignerPose, ABoneOfNoLengthIsRefusedNamingIt) {
 }
 
 // Largest rotation difference (degrees) between the posed comparedBones() of two rigs.
-float largestTurnDeg(const render::Scene& a, const app::SignerRig& rigA, const render::Scene& b,
-                     const app::SignerRig& rigB, const app::SignerPosture& posture, std::string* worst) {
+float largestTurnDeg(const render::Scene& a, const signer::SignerRig& rigA, const render::Scene& b,
+                     const signer::SignerRig& rigB, const signer::SignerPosture& posture, std::string* worst) {
     const std::vector<glm::mat4> wa = posedJoints(a, rigA, posture), wb = posedJoints(b, rigB, posture);
     float largest = 0.0f;
     for (std::size_t i = 0; i < wa.size(); ++i) {
@@ -324,8 +324,8 @@ float largestTurnDeg(const render::Scene& a, const app::SignerRig& rigA, const r
 }
 
 TEST(SignerPose, ThePalmsRestRollIsMeasuredOnBothSidesAtAnyAngle) {
-    const app::SignerRig original(avatar());
-    app::SignerPosture posture;
+    const signer::SignerRig original(avatar());
+    signer::SignerPosture posture;
     posture.rightWrist = original.presentingTarget(hand::Side::Right);
     posture.leftWrist = original.presentingTarget(hand::Side::Left);
     for (float tilt : {0.0f, 40.0f}) {
@@ -335,7 +335,7 @@ TEST(SignerPose, ThePalmsRestRollIsMeasuredOnBothSidesAtAnyAngle) {
             test::swingRest(s, "rightUpperArm", "rightLowerArm", glm::vec3(0, 0, 1), tilt);
             test::rollPalmInRest(s, "left", roll);
             test::rollPalmInRest(s, "right", roll);
-            const app::SignerRig changed(s);
+            const signer::SignerRig changed(s);
             std::string worst;
             EXPECT_LT(largestTurnDeg(s, changed, avatar(), original, posture, &worst), 0.1f)
                 << "tilt " << tilt << " roll " << roll << ": " << worst;
@@ -351,8 +351,8 @@ TEST(SignerPose, WithoutTwistBonesTheLowerArmTakesHalfThePalmsRoll) {
             s.nodes[s.findNode(twist)].name = std::string("unmapped_") + twist;
         render::Scene unrolled = s;
         test::rollPalmInRest(s, "right", roll, false);
-        const app::SignerRig rolledRig(s), unrolledRig(unrolled);
-        app::SignerPosture posture;
+        const signer::SignerRig rolledRig(s), unrolledRig(unrolled);
+        signer::SignerPosture posture;
         posture.rightWrist = unrolledRig.presentingTarget(hand::Side::Right);
         std::vector<glm::mat4> a, b;
         render::computeWorldTransforms(s, rolledRig.pose(posture), a);

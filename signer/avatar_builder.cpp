@@ -1,4 +1,4 @@
-#include "app/avatar_builder.hpp"
+#include "signer/avatar_builder.hpp"
 
 #include "hand/arm_ik.hpp"
 
@@ -13,7 +13,7 @@
 #include <map>
 #include <utility>
 
-namespace signstim::app {
+namespace signstim::signer {
 namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
@@ -800,4 +800,4 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
     return scene;
 }
 
-}  // namespace signstim::app
+}  // namespace signstim::signer

@@ -1,7 +1,7 @@
 // The default signer: VRM skeleton, hand bones = the McDonald hand, smooth skin weights, and
 // no cracks, stretching or candy-wrapper collapse when skinned at extreme poses.
-#include "app/avatar_builder.hpp"
-#include "app/signer_pose.hpp"
+#include "signer/avatar_builder.hpp"
+#include "signer/signer_pose.hpp"
 #include "hand/hand_model.hpp"
 
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@ using namespace signstim;
 namespace {
 
 const render::Scene& avatar() {
-    static const render::Scene scene = app::buildDefaultAvatar();
+    static const render::Scene scene = signer::buildDefaultAvatar();
     return scene;
 }
 
@@ -57,7 +57,7 @@ hand::HandControls fist() {
 
 TEST(Avatar, SkeletonHasEveryVrmBoneInTheHumanoidHierarchy) {
     const render::Scene& s = avatar();
-    for (const std::string& name : app::requiredAvatarBones()) EXPECT_GE(s.findNode(name), 0) << name;
+    for (const std::string& name : signer::requiredAvatarBones()) EXPECT_GE(s.findNode(name), 0) << name;
     const auto parentName = [&](const char* child) { return s.nodes[s.nodes[s.findNode(child)].parent].name; };
     EXPECT_EQ(parentName("rightHand"), "rightLowerArm");
     EXPECT_EQ(parentName("rightLowerArm"), "rightUpperArm");
@@ -68,7 +68,7 @@ TEST(Avatar, SkeletonHasEveryVrmBoneInTheHumanoidHierarchy) {
     ASSERT_EQ(s.skins.size(), 1u);
     EXPECT_EQ(s.materials.size(), 7u);  // skin, top, eye white, iris, hair, lips, nail
     // The posing code accepts it as it is.
-    EXPECT_NO_THROW(app::SignerRig rig(s));
+    EXPECT_NO_THROW(signer::SignerRig rig(s));
 }
 
 TEST(Avatar, HandBonesAreTheHandModelsBodiesAtItsDimensions) {
@@ -125,16 +125,16 @@ TEST(Avatar, SkinWeightsSumToOneAndChangeSmoothlyAcrossEdges) {
 
 TEST(Avatar, NoEdgeStretchesOrCollapsesAtExtremePoses) {
     const render::Scene& s = avatar();
-    const app::SignerRig rig(s);
+    const signer::SignerRig rig(s);
     // Elbows at their flexion limit, wrists flexed to the limit, fists; then hands overhead.
-    std::vector<app::SignerPosture> postures(3);
+    std::vector<signer::SignerPosture> postures(3);
     for (auto& p : postures) { p.rightHand = fist(); p.leftHand = fist(); }
     postures[0].rightWrist = hand::ArmTarget{rig.arm(hand::Side::Right).shoulderMm + glm::vec3(60, -60, 150),
                                              glm::quat(1, 0, 0, 0)};
     postures[1].rightWrist = hand::ArmTarget{{-150, 450, 200}, glm::quat(1, 0, 0, 0)};
     postures[1].leftWrist = hand::ArmTarget{{250, -100, 400}, glm::quat(0.7071f, 0.7071f, 0, 0)};
-    for (const app::SignerPosture& posture : postures) {
-        app::PoseReport report;
+    for (const signer::SignerPosture& posture : postures) {
+        signer::PoseReport report;
         const render::Pose pose = rig.pose(posture, &report);
         for (const render::Primitive& p : s.meshes[0].primitives) {
             const std::vector<glm::vec3> posed = skinnedPositions(s, pose, p);
@@ -196,8 +196,8 @@ TEST(Avatar, FingerVolumeHoldsAtFullFlexion) {
     // A fist: every finger and thumb vertex keeps a good part of its rest distance from its
     // dominant bone (a collapsed knuckle would fold onto the bone axis).
     const render::Scene& s = avatar();
-    const app::SignerRig rig(s);
-    app::SignerPosture posture;
+    const signer::SignerRig rig(s);
+    signer::SignerPosture posture;
     posture.rightHand = fist();
     posture.rightWrist = rig.presentingTarget(hand::Side::Right);
     const render::Pose pose = rig.pose(posture);

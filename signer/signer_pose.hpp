@@ -2,7 +2,7 @@
 // Posing a signer avatar for one frame: hand shapes (McDonald hand controls), wrist targets
 // (arm IK) and an optional gaze point -> a render::Pose for the avatar's Scene.
 //
-// Works for the default avatar (app/avatar_builder.hpp) and for any glTF whose skeleton uses
+// Works for the default avatar (signer/avatar_builder.hpp) and for any glTF whose skeleton uses
 // VRM humanoid bone names (or a mapping file), +Y up. Rotations are retargeted through the
 // rest pose: world(bone) = canonical(bone) · (Δ(bone) · canonicalRest(bone))⁻¹ · restWorld(bone),
 // so the user's own bone axes do not matter. canonicalRest is the bone's frame in the
@@ -11,7 +11,7 @@
 // arms, palms down or forward, curled or splayed fingers are all taken as they are. Arm and
 // digit bones are measured by their direction to the next joint (the last bone of a digit
 // by a leaf node continuing it, if it has one), the hand by its whole frame; the forearm's
-// roll follows the hand's (app/signer_pose.cpp, measureRestPose). Not measured: the upper
+// roll follows the hand's (signer/signer_pose.cpp, measureRestPose). Not measured: the upper
 // arm's or a digit's roll about its own axis — the thumb's included. A bone of no length is refused.
 // The arm lengths and shoulder positions are read from the skeleton. An avatar facing another way (VRM 0.x faces
 // -Z) is turned to face +Z first by faceAvatarForward().
@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-namespace signstim::app {
+namespace signstim::signer {
 
 // VRM humanoid bone name -> node name in the user's glTF, and where each entry was written, so
 // that a wrong entry is reported in the bone-map file rather than blamed on the avatar.
@@ -141,4 +141,4 @@ private:
     float handScale_ = 1.0f;
 };
 
-}  // namespace signstim::app
+}  // namespace signstim::signer

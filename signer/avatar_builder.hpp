@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace signstim::app {
+namespace signstim::signer {
 
 struct AvatarDimensions {
     // [S] Drillis & Contini segment ratios, stature 1750 mm; shoulder joint centres 175 mm
@@ -36,4 +36,4 @@ const std::vector<std::string>& requiredAvatarBones();
 // The default avatar. Deterministic: the same build gives the same scene, bit for bit.
 render::Scene buildDefaultAvatar(const AvatarDimensions& dimensions = {});
 
-}  // namespace signstim::app
+}  // namespace signstim::signer

@@ -6,7 +6,7 @@
 // a verb (point, vector, animator, uninflected) differ only in the verb. Several clips can be
 // shown side by side in one frame (SPEC §4.3): every view samples the same clip time, so the
 // panels stay in sync; a shorter clip holds its last posture.
-#include "app/signer_pose.hpp"
+#include "signer/signer_pose.hpp"
 #include "renderer/frame.hpp"
 #include "renderer/frame_sink.hpp"
 #include "renderer/renderer.hpp"
@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace signstim::app {
+namespace signstim::signer {
 
 // The default signer (or a user's avatar) with its rig and the handshape library, loaded
 // once. Not copyable: the rig refers to the avatar scene.
@@ -105,4 +105,4 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
                           render::FrameSink& sink,
                           const std::function<void(std::uint64_t, std::uint64_t)>& progress = {});
 
-}  // namespace signstim::app
+}  // namespace signstim::signer

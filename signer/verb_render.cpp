@@ -1,6 +1,6 @@
-#include "app/verb_render.hpp"
+#include "signer/verb_render.hpp"
 
-#include "app/avatar_render.hpp"
+#include "signer/avatar_render.hpp"
 #include "common/error.hpp"
 #include "renderer/gltf_loader.hpp"
 
@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace signstim::app {
+namespace signstim::signer {
 namespace {
 
 double smoothstep(double u) {
@@ -156,4 +156,4 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
     return total;
 }
 
-}  // namespace signstim::app
+}  // namespace signstim::signer

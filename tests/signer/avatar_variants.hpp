@@ -41,7 +41,7 @@ inline void turnRoots(render::Scene& s, const glm::quat& turn) {
 // Swings node `name`'s rest pose by `degrees` about the axis closest to `hint` that is
 // perpendicular to the bone (toward `child`): a change of rest pose that joint positions
 // show. (A turn about a bone's own axis is not visible in them; SignerRig measures only the
-// hand's whole frame, see app/signer_pose.hpp.)
+// hand's whole frame, see signer/signer_pose.hpp.)
 inline void swingRest(render::Scene& s, const std::string& name, const std::string& child, const glm::vec3& hint,
                       float degrees) {
     std::vector<glm::mat4> world;

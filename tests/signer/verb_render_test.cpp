@@ -1,9 +1,9 @@
 // From verb performances to signer frames: the hands go where the verb data say, palms and
 // fingers pointing the way they say, and clips start at rest.
-#include "app/avatar_builder.hpp"
-#include "app/avatar_render.hpp"
-#include "app/signer_pose.hpp"
-#include "app/verb_render.hpp"
+#include "signer/avatar_builder.hpp"
+#include "signer/avatar_render.hpp"
+#include "signer/signer_pose.hpp"
+#include "signer/verb_render.hpp"
 #include "stimuli/handshapes.hpp"
 #include "stimuli/verbs.hpp"
 #include "stimuli/verb_models.hpp"
@@ -17,8 +17,8 @@ namespace {
 const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR) / "scenes";
 
 struct Fixture {
-    render::Scene avatar = app::buildDefaultAvatar();
-    app::SignerRig rig{avatar};
+    render::Scene avatar = signer::buildDefaultAvatar();
+    signer::SignerRig rig{avatar};
     stimuli::HandshapeLibrary shapes = stimuli::loadHandshapes(kScenes / "handshapes.json", rig.handModel());
     stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(kScenes / "verbs.json");
     stimuli::TrainedVerbModels models = stimuli::loadVerbModels(kScenes / "models" / "verb_models.json", verbs);
@@ -52,9 +52,9 @@ TEST(VerbRender, HandsFaceTheWayTheVerbDataSay) {
     // left is +X.
     const Fixture& f = fixture();
     const stimuli::VerbSources sources{&f.verbs, &f.models, kScenes / "animator"};
-    const app::VerbClip clip(f.rig, f.shapes,
+    const signer::VerbClip clip(f.rig, f.shapes,
                              stimuli::synthesizeVerb(sources, "MEET", stimuli::VerbVersion::Uninflected, 0.9, -0.6));
-    const render::Pose pose = f.rig.pose(clip.postureAt(app::ClipTiming{}.leadInSeconds));
+    const render::Pose pose = f.rig.pose(clip.postureAt(signer::ClipTiming{}.leadInSeconds));
     std::vector<glm::mat4> world;
     render::computeWorldTransforms(f.avatar, pose, world);
     glm::vec3 palm, fingers;
@@ -71,10 +71,10 @@ TEST(VerbRender, ClipRisesFromRestAndReachesTheFirstKeyframeAfterTheLeadIn) {
     const stimuli::VerbSources sources{&f.verbs, &f.models, kScenes / "animator"};
     stimuli::VerbPerformance performance =
         stimuli::synthesizeVerb(sources, "GIVE", stimuli::VerbVersion::Point, 0.9, -0.6);
-    const glm::vec3 first = app::armTargetFromSigningSpace(performance.hands[0].keyframes.front().pose).wristMm;
-    const glm::vec3 last = app::armTargetFromSigningSpace(performance.hands[0].keyframes.back().pose).wristMm;
-    const app::ClipTiming timing;
-    const app::VerbClip clip(f.rig, f.shapes, std::move(performance), timing);
+    const glm::vec3 first = signer::armTargetFromSigningSpace(performance.hands[0].keyframes.front().pose).wristMm;
+    const glm::vec3 last = signer::armTargetFromSigningSpace(performance.hands[0].keyframes.back().pose).wristMm;
+    const signer::ClipTiming timing;
+    const signer::VerbClip clip(f.rig, f.shapes, std::move(performance), timing);
     EXPECT_LT(glm::distance(clip.postureAt(0.0).rightWrist->wristMm,
                             f.rig.restingTarget(hand::Side::Right).wristMm), 1e-3f);
     EXPECT_LT(glm::distance(clip.postureAt(timing.leadInSeconds).rightWrist->wristMm, first), 1e-3f);
@@ -84,10 +84,10 @@ TEST(VerbRender, ClipRisesFromRestAndReachesTheFirstKeyframeAfterTheLeadIn) {
 TEST(VerbRender, OneHandedVerbsLeaveTheOtherHandAtRest) {
     const Fixture& f = fixture();
     const stimuli::VerbSources sources{&f.verbs, &f.models, kScenes / "animator"};
-    const app::VerbClip clip(f.rig, f.shapes,
+    const signer::VerbClip clip(f.rig, f.shapes,
                              stimuli::synthesizeVerb(sources, "ASK", stimuli::VerbVersion::Point, 0.9, -0.6));
     for (double t : {0.0, 0.5, 0.8, clip.durationSeconds()}) {
-        const app::SignerPosture posture = clip.postureAt(t);
+        const signer::SignerPosture posture = clip.postureAt(t);
         EXPECT_TRUE(posture.rightWrist.has_value());
         EXPECT_FALSE(posture.leftWrist.has_value());
     }
@@ -122,19 +122,19 @@ TEST(VerbRender, FourVersionsSideBySideStayInSyncAndDifferOnlyInTheVerb) {
     // message fails the test.
     const Fixture& f = fixture();
     const stimuli::VerbSources sources{&f.verbs, &f.models, kScenes / "animator"};
-    std::vector<app::VerbClip> clips;
+    std::vector<signer::VerbClip> clips;
     for (auto version : {stimuli::VerbVersion::Point, stimuli::VerbVersion::Vector, stimuli::VerbVersion::Animator,
                          stimuli::VerbVersion::Uninflected})
         clips.emplace_back(f.rig, f.shapes, stimuli::synthesizeVerb(sources, "GIVE", version, 0.9, -0.6));
-    render::RendererOptions options = app::signerRendererOptions(256, 192, 1, "");
+    render::RendererOptions options = signer::signerRendererOptions(256, 192, 1, "");
     options.validation = true;
     render::Renderer renderer(options);
     const int handle = renderer.addScene(f.avatar);
-    app::ClipRenderOptions clipOptions;
+    signer::ClipRenderOptions clipOptions;
     clipOptions.framesPerSecond = 10.0;
     clipOptions.columns = clipOptions.rows = 2;
     CollectingSink sink;
-    const std::uint64_t frames = app::renderClips(renderer, handle, f.avatar, f.rig,
+    const std::uint64_t frames = signer::renderClips(renderer, handle, f.avatar, f.rig,
                                                   {&clips[0], &clips[1], &clips[2], &clips[3]}, {"A", "B", "C", "D"},
                                                   clipOptions, sink);
     EXPECT_TRUE(renderer.validationMessages().empty()) << renderer.validationMessages().front();
