@@ -17,5 +17,6 @@ void registerHandCommands(Commands& commands);    // hand ..., bench hand
 void registerVerbCommands(Commands& commands);    // train, verb, evaluate
 void registerAvatarCommands(Commands& commands);  // avatar build, handshapes, pose
 void registerDemoCommand(Commands& commands);     // demo (the main job until the study exists)
+void registerStoryCommands(Commands& commands);   // story (check, timeline, render)
 
 }  // namespace signstim::app

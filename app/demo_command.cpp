@@ -164,7 +164,7 @@ void runDemo(const DemoOptions& o) {
         const fs::path movie = root / "verbs" / (stem + ".mp4");
         const fs::path still = root / "verbs" / (stem + ".png");
 
-        std::vector<const VerbClip*> views;
+        std::vector<const Clip*> views;
         for (const VerbClip& clip : clips[v]) views.push_back(&clip);
         const double middle = clips[v].front().middleOfVerbSeconds();
         auto videoSink = render::makeVideoSink(movie, video);

@@ -59,6 +59,7 @@ int main(int argc, char** argv) {
     app::registerHandCommands(commands);
     app::registerAvatarCommands(commands);
     app::registerVerbCommands(commands);
+    app::registerStoryCommands(commands);
     app::requirePlainNumbers(root);
 
     try {

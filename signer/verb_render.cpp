@@ -21,8 +21,8 @@ hand::Side toHandSide(stimuli::HandSide side) {
     return side == stimuli::HandSide::Right ? hand::Side::Right : hand::Side::Left;
 }
 
-// [D] A hand that takes no part in the verb hangs relaxed: fingers gently curled, more so
-// toward the little finger, thumb resting beside the index (not the flat bind pose).
+}  // namespace
+
 hand::HandControls relaxedHand() {
     hand::HandControls controls;
     const float bend[] = {0.12f, 0.16f, 0.2f, 0.24f}, hook[] = {0.2f, 0.25f, 0.3f, 0.35f};
@@ -46,8 +46,6 @@ hand::ArmTarget blendTargets(const hand::ArmTarget& a, const hand::ArmTarget& b,
                                   t);
     return out;
 }
-
-}  // namespace
 
 Signer::Signer(const std::filesystem::path& scenesDir, const std::filesystem::path& avatarFile,
                const BoneMapping& mapping)
@@ -105,13 +103,13 @@ SignerPosture VerbClip::postureAt(double seconds) const {
 }
 
 std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const render::Scene& avatar,
-                          const SignerRig& rig, const std::vector<const VerbClip*>& clips,
+                          const SignerRig& rig, const std::vector<const Clip*>& clips,
                           const std::vector<std::string>& labels, const ClipRenderOptions& options,
                           render::FrameSink& sink,
                           const std::function<void(std::uint64_t, std::uint64_t)>& progress) {
     if (clips.empty()) return 0;
     double duration = 0.0;
-    for (const VerbClip* clip : clips) duration = std::max(duration, clip->durationSeconds());
+    for (const Clip* clip : clips) duration = std::max(duration, clip->durationSeconds());
     const std::uint64_t total = static_cast<std::uint64_t>(std::floor(duration * options.framesPerSecond + 1e-9)) + 1;
 
     // One fixed camera for every view and frame: waist-up on the rest pose.
@@ -138,6 +136,8 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
         frame.columns = options.columns;
         frame.rows = options.rows;
         for (std::size_t i = 0; i < clips.size(); ++i) {
+            if (f > 0 && clips[i]->solveAfresh(static_cast<double>(f - 1) / options.framesPerSecond, t))
+                hasPrevious[i] = false;
             PoseReport report;
             render::View view;
             view.scene = sceneHandle;

@@ -62,25 +62,37 @@ struct ClipTiming {
     double holdSeconds = 0.5;    // on the last keyframe
 };
 
-class VerbClip {
+// Anything that gives the signer's posture over time: a verb clip, a story timeline.
+class Clip {
+public:
+    virtual ~Clip() = default;
+    virtual double durationSeconds() const = 0;
+    // The signer's posture `seconds` after the clip starts (clamped to the clip).
+    virtual SignerPosture postureAt(double seconds) const = 0;
+    // True when the arms must be solved afresh at `seconds`, without the previous frame's
+    // elbow (which keeps neighbouring frames continuous): a story's frames after a verb slot
+    // then depend only on their own posture, so they are the same image in every version.
+    virtual bool solveAfresh(double previousSeconds, double seconds) const {
+        (void)previousSeconds;
+        (void)seconds;
+        return false;
+    }
+};
+
+class VerbClip final : public Clip {
 public:
     // Throws InputError when a keyframe names a handshape the library lacks.
     VerbClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes,
              stimuli::VerbPerformance performance, ClipTiming timing = {});
 
-    double durationSeconds() const;
+    double durationSeconds() const override;
     // Halfway through the verb itself (after the lead-in): where a still of the clip is taken.
     double middleOfVerbSeconds() const { return timing_.leadInSeconds + 0.5 * performance_.durationSeconds; }
     const stimuli::VerbPerformance& performance() const { return performance_; }
 
-    // The signer's posture `seconds` after the clip starts (clamped to the clip).
-    SignerPosture postureAt(double seconds) const;
+    SignerPosture postureAt(double seconds) const override;
 
 private:
-    struct Track {
-        const stimuli::HandTrack* track = nullptr;
-        hand::Side side = hand::Side::Right;
-    };
     const SignerRig* rig_;
     const stimuli::HandshapeLibrary* shapes_;
     stimuli::VerbPerformance performance_;
@@ -90,17 +102,24 @@ private:
 // Hand pose of the signing-space frame (SPEC §3.1) -> arm target in the body frame.
 hand::ArmTarget armTargetFromSigningSpace(const stimuli::HandPose& pose);
 
+// [D] A hand that takes no part in what is signed hangs relaxed: fingers gently curled, more
+// so toward the little finger, thumb resting beside the index (not the flat bind pose).
+hand::HandControls relaxedHand();
+
+// Arm targets blended: position linearly, rotation by the shortest slerp; t in [0, 1].
+hand::ArmTarget blendTargets(const hand::ArmTarget& a, const hand::ArmTarget& b, float t);
+
 struct ClipRenderOptions {
     double framesPerSecond = 30.0;
     std::uint32_t columns = 1, rows = 1;  // grid of the views
 };
 
-// Renders `clips` side by side (one view each, labelled by `labels` when given) into `sink`,
+// Renders `clips` (verb clips, story timelines) side by side (one view each, labelled by `labels` when given) into `sink`,
 // one frame per 1/fps from 0 to the longest clip's end inclusive. The camera is the
 // waist-up view of the rest pose, fixed for the whole clip. `progress(done, total)` is called
 // after each frame. Returns the number of frames.
 std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const render::Scene& avatar,
-                          const SignerRig& rig, const std::vector<const VerbClip*>& clips,
+                          const SignerRig& rig, const std::vector<const Clip*>& clips,
                           const std::vector<std::string>& labels, const ClipRenderOptions& options,
                           render::FrameSink& sink,
                           const std::function<void(std::uint64_t, std::uint64_t)>& progress = {});

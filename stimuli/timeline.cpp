@@ -351,8 +351,10 @@ private:
     bool verbSlotOpen_ = false;
 };
 
-double roundTo(double v, double step) {
-    const double r = std::round(v / step) * step;
+// Rounded to 1/scale (scale a power of ten): the division by an exact integer gives the
+// double nearest the decimal, so the JSON reads 2.106, not 2.1060000000000003.
+double roundTo(double v, double scale) {
+    const double r = std::round(v * scale) / scale;
     return r == 0.0 ? 0.0 : r;
 }
 
@@ -409,12 +411,12 @@ GazeSample sampleGaze(const std::vector<GazeKey>& gaze, double t) {
 
 std::string formatTimelineJson(const Timeline& timeline) {
     using Json = nlohmann::ordered_json;
-    auto vec = [](const glm::dvec3& v) { return Json::array({roundTo(v.x, 0.01), roundTo(v.y, 0.01), roundTo(v.z, 0.01)}); };
+    auto vec = [](const glm::dvec3& v) { return Json::array({roundTo(v.x, 100.0), roundTo(v.y, 100.0), roundTo(v.z, 100.0)}); };
     auto hand = [&](const std::vector<TimelineKey>& keys) {
         Json out = Json::array();
         for (const TimelineKey& k : keys) {
             Json j;
-            j["time"] = roundTo(k.timeSeconds, 1e-4);
+            j["time"] = roundTo(k.timeSeconds, 1e4);
             if (k.rest) {
                 j["rest"] = true;
             } else {
@@ -430,18 +432,18 @@ std::string formatTimelineJson(const Timeline& timeline) {
     Json root;
     root["story"] = timeline.story;
     root["version"] = timeline.version;
-    root["duration"] = roundTo(timeline.durationSeconds, 1e-4);
+    root["duration"] = roundTo(timeline.durationSeconds, 1e4);
     Json spans = Json::array();
     for (const TimelineSpan& s : timeline.spans)
         spans.push_back({{"kind", toString(s.kind)}, {"label", s.label}, {"sentence", s.sentence + 1}, {"item", s.item + 1},
-                         {"start", roundTo(s.startSeconds, 1e-4)}, {"end", roundTo(s.endSeconds, 1e-4)}});
+                         {"start", roundTo(s.startSeconds, 1e4)}, {"end", roundTo(s.endSeconds, 1e4)}});
     root["spans"] = spans;
     root["right"] = hand(timeline.right);
     root["left"] = hand(timeline.left);
     Json gaze = Json::array();
     for (const GazeKey& g : timeline.gaze) {
         Json j;
-        j["time"] = roundTo(g.timeSeconds, 1e-4);
+        j["time"] = roundTo(g.timeSeconds, 1e4);
         if (g.targetMm) j["target"] = vec(*g.targetMm);
         else j["target"] = "viewer";
         gaze.push_back(j);

@@ -1,0 +1,203 @@
+// `signstim story`: a story file (docs/stories.md) checked, as a timeline, or rendered in one
+// of the four versions.
+#include "app/cli_values.hpp"
+#include "app/commands.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "renderer/frame_sink.hpp"
+#include "renderer/image_io.hpp"
+#include "renderer/renderer.hpp"
+#include "signer/avatar_render.hpp"
+#include "signer/timeline_clip.hpp"
+#include "stimuli/lexicon.hpp"
+#include "stimuli/scenes_path.hpp"
+#include "stimuli/story.hpp"
+#include "stimuli/timeline.hpp"
+#include "stimuli/verb_models.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+namespace signstim::app {
+
+using namespace signstim::signer;
+
+namespace {
+
+using namespace signstim::stimuli;
+
+struct StoryOptions {
+    std::string file;
+    std::string version;
+    std::string outPath;
+    bool check = false;
+    bool json = false;
+    std::string size = "640x480";
+    std::string fps = "30";
+    std::uint32_t msaa = 4;
+    std::string device;
+    double rate = 1.0;
+    std::string scenesDir;
+    std::string lexiconFile;
+    bool quiet = false;
+};
+
+// Everything a story is checked against and built from, loaded once.
+struct StoryWorld {
+    std::filesystem::path scenes;
+    hand::HandModel handModel = hand::buildHandModel();
+    HandshapeLibrary shapes;
+    VerbLibrary verbs;
+    TrainedVerbModels models;
+    Lexicon lexicon;
+    Story story;
+
+    explicit StoryWorld(const StoryOptions& o) : scenes(resolveScenesDir(o.scenesDir)) {
+        shapes = loadHandshapes(scenes / "handshapes.json", handModel);
+        verbs = loadVerbLibrary(scenes / "verbs.json");
+        models = loadVerbModels(scenes / "models" / "verb_models.json", verbs);
+        lexicon = loadLexicon(o.lexiconFile.empty() ? scenes / "lexicon.json" : std::filesystem::path(o.lexiconFile), shapes,
+                              handModel);
+        StoryVocabulary vocabulary;
+        vocabulary.verbs = &verbs;
+        vocabulary.signs = lexicon.glosses();
+        // J and Z are a handshape (I, 1) plus a path; the other letters are their handshape.
+        vocabulary.canFingerspell = [this](char letter) {
+            const std::string shape = letter == 'J' ? "I" : letter == 'Z' ? "1" : std::string(1, letter);
+            return shapes.find(shape) != nullptr;
+        };
+        story = loadStory(o.file, vocabulary);
+    }
+
+    TimelineSources sources() const {
+        TimelineSources s;
+        s.lexicon = &lexicon;
+        s.shapes = &shapes;
+        s.verbs = [this](const std::string& verb, VerbVersion version, double subject, double object, int line,
+                         int column) {
+            try {
+                return synthesizeVerb(VerbSources{&verbs, &models, scenes / "animator", &shapes}, verb, version, subject,
+                                      object);
+            } catch (const InputError& e) {
+                // Say which sentence needs it (a missing animator file, most often).
+                if (e.isCommandLine()) throw InputError(story.file, line, column, "", e.detail());
+                throw InputError(story.file, line, column, "", std::string(e.what()));
+            }
+        };
+        return s;
+    }
+};
+
+VerbVersion requireVersion(const StoryOptions& o) {
+    if (o.version.empty()) throw commandLineError("--version", "give the version: point, vector, animator or uninflected");
+    const std::optional<VerbVersion> v = parseVerbVersion(o.version);
+    if (!v) throw commandLineError("--version", "'" + o.version + "' is not a version (point, vector, animator, uninflected)");
+    return *v;
+}
+
+void renderStory(const StoryOptions& o, const StoryWorld& world, VerbVersion version) {
+    const std::filesystem::path out(o.outPath);
+    const render::OutputKind kind = render::outputKind(out);
+    const ImageSize size = parseImageSize(o.size, "--size", {.even = kind == render::OutputKind::Video});
+    const render::FrameRate frameRate = render::parseFrameRate(o.fps);
+    if (kind == render::OutputKind::Folder) render::checkFrameFolder(out);
+    requireSampleCount(o.msaa, "--msaa");
+    TimelineOptions timing;
+    timing.rate = o.rate;
+    const Signer signer(world.scenes);
+    const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(world.story, version, world.sources(), timing));
+    render::Renderer renderer(signerRendererOptions(size.width, size.height, o.msaa, o.device));
+    checkOutputWritable(out);
+    const int handle = renderer.addScene(signer.avatar());
+    ClipRenderOptions options;
+    options.framesPerSecond = frameRate.value();
+    render::VideoOptions video;
+    video.frameRate = frameRate;
+    const bool still = kind == render::OutputKind::Image;
+    // The still: the middle of the first verb (where the versions differ), else the middle.
+    double stillSeconds = 0.5 * clip.durationSeconds();
+    for (const TimelineSpan& span : clip.timeline().spans)
+        if (span.kind == SpanKind::Verb) {
+            stillSeconds = 0.5 * (span.startSeconds + span.endSeconds);
+            break;
+        }
+    std::unique_ptr<render::FrameSink> target = still ? render::makeDiscardSink() : render::makeFrameSink(out, {}, video);
+    StillCapturingSink sink(*target, static_cast<std::uint64_t>(stillSeconds * options.framesPerSecond));
+    const std::uint64_t frames =
+        renderClips(renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink,
+                    [&](std::uint64_t done, std::uint64_t total) {
+                        if (!o.quiet && (done == total || done % 30 == 0))
+                            std::fprintf(stderr, "signstim: frame %llu/%llu\n", static_cast<unsigned long long>(done),
+                                         static_cast<unsigned long long>(total));
+                    });
+    sink.finish();
+    if (still) render::writeImage(sink.still(), out);
+    std::printf("%s: \"%s\" (%s), %llu frame%s, %.1f s\n", out.string().c_str(), world.story.title.c_str(),
+                toString(version).c_str(), static_cast<unsigned long long>(still ? 1 : frames),
+                still || frames == 1 ? "" : "s", clip.durationSeconds());
+}
+
+}  // namespace
+
+void registerStoryCommands(Commands& commands) {
+    auto o = std::make_shared<StoryOptions>();
+    CLI::App* story = commands.root.add_subcommand(
+        "story",
+        "A story in gloss (docs/stories.md): check it, print its timeline, or render the signer telling\n"
+        "it in one version. The four versions differ only inside the verbs; every other frame is\n"
+        "identical. Signs come from SCENES/lexicon.json, verbs from SCENES/verbs.json.\n"
+        "Examples:\n"
+        "  signstim story scenes/stories/story-01.json --check\n"
+        "  signstim story my-story.json --version point --out point.mp4\n"
+        "  signstim story my-story.json --version animator --json > timeline.json");
+    story->add_option("FILE", o->file, "Story file (JSON)")->required();
+    story->add_option("--version", o->version, "point | vector | animator | uninflected");
+    auto* check = story->add_flag("--check", o->check,
+                                  "Only check: the story, its signs, letters and verbs, in all four versions (exit 2 "
+                                  "naming file:line:column)");
+    auto* json = story->add_flag("--json", o->json, "Print the timeline of --version as JSON")->excludes(check);
+    story->add_option("--out", o->outPath, "FILE.mp4, FILE.png (a still of the first verb) or a folder of frames")
+        ->excludes(check)
+        ->excludes(json);
+    story->add_option("--size", o->size, "Image size WxH (even for .mp4)")->capture_default_str();
+    story->add_option("--fps", o->fps, "Frame rate: 30, 25, 30000/1001 ...")->capture_default_str();
+    story->add_option("--msaa", o->msaa, "Multisampling: 1 or 4")->capture_default_str();
+    story->add_option("--device", o->device, "Vulkan device: name substring or index (see `signstim devices`)");
+    story->add_option("--rate", o->rate, "Signing speed relative to citation timing (0.1 to 4)")->capture_default_str();
+    story->add_option("--scenes", o->scenesDir,
+                      "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ installed beside signstim)");
+    story->add_option("--lexicon", o->lexiconFile, "Lexicon (default: SCENES/lexicon.json)");
+    story->add_flag("--quiet", o->quiet, "No progress on stderr");
+    story->callback([o] {
+        requireInRange(o->rate, 0.1, 4.0, "--rate");
+        if (!o->check && !o->json && o->outPath.empty())
+            throw commandLineError("--out", "say what to do: --check, --json or --out FILE");
+        std::optional<VerbVersion> version;
+        if (!o->check) version = requireVersion(*o);
+        const StoryWorld world(*o);
+        TimelineOptions timing;
+        timing.rate = o->rate;
+        if (o->check) {
+            double seconds = 0.0;
+            int verbs = 0;
+            for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
+                const Timeline t = buildTimeline(world.story, v, world.sources(), timing);
+                seconds = t.durationSeconds;
+                verbs = 0;
+                for (const TimelineSpan& span : t.spans) verbs += span.kind == SpanKind::Verb;
+            }
+            std::printf("%s: ok: \"%s\", %zu characters, %zu sentences, %d verbs, %zu questions, %.1f s in every version\n",
+                        o->file.c_str(), world.story.title.c_str(), world.story.characters.size(),
+                        world.story.sentences.size(), verbs, world.story.questions.size(), seconds);
+            return;
+        }
+        if (o->json) {
+            std::fputs(formatTimelineJson(buildTimeline(world.story, *version, world.sources(), timing)).c_str(), stdout);
+            return;
+        }
+        renderStory(*o, world, *version);
+    });
+}
+
+}  // namespace signstim::app

@@ -1,0 +1,103 @@
+// `signstim story` as a user runs it: check, timeline, and the signer rendered in two
+// versions whose frames outside the verb slots are byte-identical (validation layer on).
+#include "tests/app/run_command.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using signstim::test::runSignstim;
+using signstim::test::shellQuote;
+
+const std::string kScenes = fs::path(SIGNSTIM_SOURCE_DIR).append("scenes").string();
+const std::string kExample = fs::path(kScenes).append("stories/examples/the-question.json").string();
+
+fs::path freshDir(const std::string& name) {
+    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "story_cli_test" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+TEST(StoryCli, CheckSaysOkForTheExampleAndNamesLineAndColumnOfAnUnknownSign) {
+    const auto ok = runSignstim("story " + shellQuote(kExample) + " --check --scenes " + shellQuote(kScenes));
+    EXPECT_EQ(ok.status, 0) << ok.output;
+    EXPECT_NE(ok.output.find("ok: \"The question"), std::string::npos) << ok.output;
+
+    const fs::path dir = freshDir("check");
+    std::string text = readFile(kExample);
+    text.replace(text.find("NOT KNOW"), 8, "NOT KNOWW");
+    std::ofstream(dir / "bad.json") << text;
+    const auto bad = runSignstim("story " + shellQuote((dir / "bad.json").string()) + " --check --scenes " + shellQuote(kScenes));
+    EXPECT_EQ(bad.status, 2) << bad.output;
+    EXPECT_NE(bad.output.find("bad.json:11:19:"), std::string::npos) << bad.output;
+    EXPECT_NE(bad.output.find("unknown gloss 'KNOWW' (closest known: KNOW"), std::string::npos) << bad.output;
+
+    const auto noVersion = runSignstim("story " + shellQuote(kExample) + " --json --scenes " + shellQuote(kScenes));
+    EXPECT_EQ(noVersion.status, 1) << noVersion.output;
+}
+
+TEST(StoryCli, JsonTimelineListsTheVerbSlots) {
+    const auto r = runSignstim("story " + shellQuote(kExample) + " --version vector --json --scenes " + shellQuote(kScenes),
+                               signstim::test::Capture::StdoutOnly);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const nlohmann::json timeline = nlohmann::json::parse(r.output);
+    int verbs = 0;
+    for (const auto& span : timeline["spans"]) verbs += span["kind"] == "verb";
+    EXPECT_EQ(verbs, 2);
+    EXPECT_EQ(timeline["version"], "vector");
+}
+
+// The property the study relies on to render shared frames once: every frame outside the
+// verb slots is the same image in every version.
+TEST(StoryCli, RenderedFramesOutsideTheVerbSlotsAreByteIdenticalAcrossVersions) {
+    const fs::path dir = freshDir("render");
+    const std::string common = "story " + shellQuote(kExample) + " --quiet --size 96x72 --fps 5 --msaa 1 --scenes " +
+                               shellQuote(kScenes);
+    for (const std::string version : {"point", "uninflected"}) {
+        const auto r = runSignstim(common + " --version " + version + " --out " + shellQuote((dir / version).string()),
+                                   signstim::test::Capture::StdoutAndStderr, "SIGNSTIM_VALIDATION=1");
+        ASSERT_EQ(r.status, 0) << r.output;
+        EXPECT_EQ(r.output.find("Validation"), std::string::npos) << r.output;
+    }
+    const auto json = runSignstim(common + " --version point --json", signstim::test::Capture::StdoutOnly);
+    const nlohmann::json timeline = nlohmann::json::parse(json.output);
+    auto insideVerb = [&](double t) {
+        for (const auto& span : timeline["spans"])
+            if (span["kind"] == "verb" && t >= span["start"].get<double>() - 1e-3 && t <= span["end"].get<double>() + 1e-3)
+                return true;
+        return false;
+    };
+    int same = 0, differ = 0;
+    for (int frame = 1;; ++frame) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%05d.png", frame);
+        if (!fs::exists(dir / "point" / name)) break;
+        const bool equal = readFile(dir / "point" / name) == readFile(dir / "uninflected" / name);
+        const double t = (frame - 1) / 5.0;
+        if (insideVerb(t)) {
+            differ += !equal;
+        } else {
+            EXPECT_TRUE(equal) << name << " at " << t << " s differs outside the verb slots";
+            same += equal;
+        }
+    }
+    EXPECT_GT(same, 40);
+    EXPECT_GT(differ, 2) << "the versions must differ inside the verb slots";
+}
+
+}  // namespace
