@@ -57,7 +57,7 @@ struct StoryWorld {
         shapes = loadHandshapes(scenes / "handshapes.json", handModel);
         verbs = loadVerbLibrary(scenes / "verbs.json");
         models = loadVerbModels(scenes / "models" / "verb_models.json", verbs);
-        lexicon = loadLexicon(o.lexiconFile.empty() ? scenes / "lexicon.json" : std::filesystem::path(o.lexiconFile), shapes,
+        lexicon = loadLexicon(o.lexiconFile.empty() ? scenes / "lexicon" : std::filesystem::path(o.lexiconFile), shapes,
                               handModel);
         StoryVocabulary vocabulary;
         vocabulary.verbs = &verbs;
@@ -146,7 +146,7 @@ void registerStoryCommands(Commands& commands) {
         "story",
         "A story in gloss (docs/stories.md): check it, print its timeline, or render the signer telling\n"
         "it in one version. The four versions differ only inside the verbs; every other frame is\n"
-        "identical. Signs come from SCENES/lexicon.json, verbs from SCENES/verbs.json.\n"
+        "identical. Signs come from SCENES/lexicon/, verbs from SCENES/verbs.json.\n"
         "Examples:\n"
         "  signstim story scenes/stories/story-01.json --check\n"
         "  signstim story my-story.json --version point --out point.mp4\n"
@@ -167,7 +167,7 @@ void registerStoryCommands(Commands& commands) {
     story->add_option("--rate", o->rate, "Signing speed relative to citation timing (0.1 to 4)")->capture_default_str();
     story->add_option("--scenes", o->scenesDir,
                       "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ installed beside signstim)");
-    story->add_option("--lexicon", o->lexiconFile, "Lexicon (default: SCENES/lexicon.json)");
+    story->add_option("--lexicon", o->lexiconFile, "Lexicon: a file or a folder of .json files (default: SCENES/lexicon/)");
     story->add_flag("--quiet", o->quiet, "No progress on stderr");
     story->callback([o] {
         requireInRange(o->rate, 0.1, 4.0, "--rate");

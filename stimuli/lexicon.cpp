@@ -5,6 +5,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
+#include <algorithm>
 #include <set>
 
 namespace signstim::stimuli {
@@ -18,12 +19,15 @@ constexpr double kLocationLimitMm = 900.0;
 // [D] A citation form lasts well under two seconds; ten is far past any sign.
 constexpr double kMaximumSignSeconds = 10.0;
 
+// Reads one lexicon file into `lexicon`, which may already hold other files' locations and
+// signs (a lexicon folder): locations first (readHeaderAndLocations for every file), then
+// signs (readSigns), so a sign may use a location another file defines.
 class LexiconReader {
 public:
-    LexiconReader(const JsonSource& source, const HandshapeLibrary& shapes, const hand::HandModel& model)
-        : source_(source), shapes_(shapes), model_(model) {}
+    LexiconReader(const JsonSource& source, const HandshapeLibrary& shapes, const hand::HandModel& model, Lexicon& lexicon)
+        : source_(source), shapes_(shapes), model_(model), lexicon_(lexicon) {}
 
-    Lexicon read() {
+    void readHeaderAndLocations() {
         const json& root = source_.root;
         if (!root.is_object()) source_.fail({}, "", "a lexicon is a JSON object {\"format\": \"signstim-lexicon\", ...}");
         for (const auto& [key, value] : root.items())
@@ -33,31 +37,26 @@ public:
             source_.fail({"\"format\""}, "/format", "expected \"format\": \"signstim-lexicon\"");
         if (!root.contains("version") || !root["version"].is_number_integer() || root["version"].get<long long>() != 1)
             source_.fail({"\"version\""}, "/version", "this signstim reads lexicon files of version 1");
-        lexicon_.file = source_.file;
-        readLocations();
-        readSigns();
-        return std::move(lexicon_);
-    }
-
-private:
-    void readLocations() {
-        if (!source_.root.contains("locations") || !source_.root["locations"].is_object())
+        if (!root.contains("locations")) return;
+        if (!root["locations"].is_object())
             source_.fail({"\"locations\""}, "/locations", "expected {\"chin\": [x, y, z], ...} in signing-space mm");
-        for (const auto& [name, value] : source_.root["locations"].items()) {
+        for (const auto& [name, value] : root["locations"].items()) {
             const std::vector<std::string> anchors{"\"locations\"", "\"" + name + "\""};
             const glm::dvec3 p = readVector3(source_, value, anchors, "/locations/" + name, kSigningSpacePositionRange);
             for (int i = 0; i < 3; ++i)
                 if (std::abs(p[i]) > kLocationLimitMm)
                     source_.fail(anchors, "/locations/" + name,
                                  "expected each coordinate within -900 to 900 mm of the chest, got " + json(p[i]).dump());
-            lexicon_.locations[name] = p;
+            const auto [at, inserted] = lexicon_.locations.emplace(name, p);
+            if (!inserted && at->second != p)
+                source_.fail(anchors, "/locations/" + name, "location '" + name + "' is defined differently in another lexicon file");
         }
     }
 
     void readSigns() {
-        const json& signs = source_.root.contains("signs") ? source_.root["signs"] : json();
-        if (!signs.is_array() || signs.empty()) source_.fail({"\"signs\""}, "/signs", "expected a non-empty array of signs");
-        std::set<std::string> glosses;
+        if (!source_.root.contains("signs")) return;
+        const json& signs = source_.root["signs"];
+        if (!signs.is_array()) source_.fail({"\"signs\""}, "/signs", "expected an array of signs");
         for (std::size_t s = 0; s < signs.size(); ++s) {
             const json& item = signs[s];
             const std::string pointer = "/signs/" + std::to_string(s);
@@ -72,7 +71,7 @@ private:
             if (parsed.error || parsed.items.size() != 1 || parsed.items[0].kind != GlossItemKind::Word ||
                 parsed.items[0].hasArgumentList || sign.gloss == "IX" || sign.gloss == "HOLD")
                 source_.fail(anchors, pointer + "/gloss", "'" + sign.gloss + "' is not a sign gloss (capitals, digits, inner hyphens)");
-            if (!glosses.insert(sign.gloss).second) source_.fail(anchors, pointer + "/gloss", sign.gloss + " is defined twice");
+            if (lexicon_.find(sign.gloss)) source_.fail(anchors, pointer + "/gloss", sign.gloss + " is defined twice");
             for (const auto& [key, value] : item.items())
                 if (key != "gloss" && key != "meaning" && key != "hands" && key != "passes" && key != "keyframes" && key != "notes")
                     source_.fail(anchors, pointer + "/" + key,
@@ -93,6 +92,7 @@ private:
         }
     }
 
+private:
     void readHands(const json& item, LexiconSign& sign, const std::vector<std::string>& anchors, const std::string& pointer) {
         const json& hands = item.contains("hands") ? item["hands"] : json();
         if (!hands.is_array() || hands.empty() || hands.size() > 2)
@@ -205,8 +205,19 @@ private:
     const JsonSource& source_;
     const HandshapeLibrary& shapes_;
     const hand::HandModel& model_;
-    Lexicon lexicon_;
+    Lexicon& lexicon_;
 };
+
+// One or more lexicon files read into one lexicon; at least one sign in all.
+Lexicon readLexicon(const std::vector<JsonSource>& sources, const std::string& name, const HandshapeLibrary& shapes,
+                    const hand::HandModel& model) {
+    Lexicon lexicon;
+    lexicon.file = name;
+    for (const JsonSource& source : sources) LexiconReader(source, shapes, model, lexicon).readHeaderAndLocations();
+    for (const JsonSource& source : sources) LexiconReader(source, shapes, model, lexicon).readSigns();
+    if (lexicon.signs.empty()) throw InputError(name, 0, "/signs", "the lexicon holds no sign");
+    return lexicon;
+}
 
 }  // namespace
 
@@ -259,11 +270,21 @@ glm::dvec3 palmOriginForTouch(const glm::dvec3& targetMm, const glm::dquat& orie
 }
 
 Lexicon parseLexicon(const JsonSource& source, const HandshapeLibrary& shapes, const hand::HandModel& model) {
-    return LexiconReader(source, shapes, model).read();
+    return readLexicon({source}, source.file, shapes, model);
 }
 
-Lexicon loadLexicon(const std::filesystem::path& file, const HandshapeLibrary& shapes, const hand::HandModel& model) {
-    return parseLexicon(readJsonFile(file), shapes, model);
+Lexicon loadLexicon(const std::filesystem::path& path, const HandshapeLibrary& shapes, const hand::HandModel& model) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(path, ec)) return parseLexicon(readJsonFile(path), shapes, model);
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(path, ec))
+        if (entry.path().extension() == ".json") files.push_back(entry.path());
+    if (ec) throw IoError(path.string(), "cannot read the lexicon folder", ec.value());
+    std::sort(files.begin(), files.end());  // the same order on every machine
+    if (files.empty()) throw InputError(path.string(), 0, "", "the lexicon folder holds no .json file");
+    std::vector<JsonSource> sources;
+    for (const auto& file : files) sources.push_back(readJsonFile(file));
+    return readLexicon(sources, path.string(), shapes, model);
 }
 
 }  // namespace signstim::stimuli

@@ -57,7 +57,8 @@ glm::dvec3 palmOriginForTouch(const glm::dvec3& targetMm, const glm::dquat& orie
                               const glm::dvec3& touchInPalmMm);
 
 // Loads and validates; handshape names are checked against `shapes`. Errors name the file,
-// the line and the field.
+// the line and the field. loadLexicon takes a file or a folder of .json files (read in name
+// order; a location may be defined in any of them, a sign only once).
 Lexicon parseLexicon(const JsonSource& source, const HandshapeLibrary& shapes, const hand::HandModel& model);
 Lexicon loadLexicon(const std::filesystem::path& file, const HandshapeLibrary& shapes, const hand::HandModel& model);
 

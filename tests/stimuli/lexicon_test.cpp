@@ -6,6 +6,8 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace signstim::stimuli {
@@ -125,6 +127,39 @@ TEST(Lexicon, EachMistakeNamesFileLineAndField) {
     std::string wrongFormat = lexiconText(kGoodKeys);
     wrongFormat.replace(wrongFormat.find("signstim-lexicon"), 16, "signstim-verbs");
     EXPECT_EQ(errorOf(wrongFormat).line(), 2);
+}
+
+}  // namespace
+}  // namespace signstim::stimuli
+
+namespace signstim::stimuli {
+namespace {
+
+TEST(Lexicon, AFolderIsReadInNameOrderWithSharedLocationsAndEachSignOnce) {
+    const std::filesystem::path dir = std::filesystem::path(SIGNSTIM_BINARY_DIR) / "lexicon_test" / "folder";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string header = "{\"format\": \"signstim-lexicon\", \"version\": 1,\n";
+    std::ofstream(dir / "00-locations.json") << header << "\"locations\": {\"chin\": [0, 255, 95]}}\n";
+    const std::string sign = "\"signs\": [{\"gloss\": \"THANK-YOU\", \"hands\": [\"right\"], \"keyframes\": {\"right\": [\n"
+                             "{\"time\": 0, \"at\": \"chin\", \"fingers\": [0, 1, 0], \"palm\": [0, 0, -1], \"handshape\": \"B\"},\n"
+                             "{\"time\": 0.4, \"at\": \"chin\", \"offset\": [0, 0, 100], \"fingers\": [0, 1, 0], \"palm\": [0, 0, -1], \"handshape\": \"B\"}]}}]}\n";
+    std::ofstream(dir / "a.json") << header << sign;
+    const Lexicon lexicon = loadLexicon(dir, shapes(), model());
+    EXPECT_EQ(lexicon.glosses(), std::vector<std::string>{"THANK-YOU"});
+    EXPECT_EQ(lexicon.file, dir.string());
+
+    std::ofstream(dir / "b.json") << header << sign;  // the same sign again
+    try {
+        loadLexicon(dir, shapes(), model());
+        ADD_FAILURE() << "a sign defined twice was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(e.file().find("b.json"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("defined twice"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(dir / "b.json");
+    std::ofstream(dir / "c.json") << header << "\"locations\": {\"chin\": [0, 250, 95]}}\n";
+    EXPECT_THROW(loadLexicon(dir, shapes(), model()), InputError);
 }
 
 }  // namespace
