@@ -244,7 +244,7 @@ std::vector<render::Material> avatarMaterials() {
     return {skin,
             make("top", {0.018f, 0.020f, 0.028f}, 0.85f),
             make("eyeWhite", {0.78f, 0.77f, 0.74f}, 0.35f),
-            make("iris", {0.04f, 0.025f, 0.015f}, 0.3f),
+            make("iris", {0.16f, 0.09f, 0.045f}, 0.3f),  // brown, lighter than the pupil
             make("hair", {0.022f, 0.015f, 0.011f}, 0.75f),
             make("lips", {0.36f, 0.12f, 0.10f}, 0.5f),
             // Paler and pinker than the skin, a little glossy: the back of a finger reads
@@ -558,7 +558,9 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
     const int neck = sk.add("neck", chest, {0.0f, 0.15f, -0.01f});
     const int head = sk.add("head", neck, {0.0f, 0.09f, 0.01f});
     const glm::vec3 headWorld = d.chestM + glm::vec3(0.0f, 0.24f, 0.0f);
-    const glm::vec3 eyeLocal{0.032f, 0.115f, 0.078f};
+    // The eyeballs stand 4 mm proud of the face (skin at z ≈ 0.098 here), so ~18 mm of each
+    // shows: open eyes whose irises turn with the gaze. Set 11 mm deeper they read as closed.
+    const glm::vec3 eyeLocal{0.032f, 0.115f, 0.089f};
     const int leftEye = sk.add("leftEye", head, eyeLocal);
     const int rightEye = sk.add("rightEye", head, {-eyeLocal.x, eyeLocal.y, eyeLocal.z});
 
@@ -703,10 +705,13 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
             mesh.ellipsoid(kEyeWhite, eye, {0.0125f, 0.0125f, 0.0125f}, front, Weights(eyeBone), 16, 10);
             mesh.ellipsoid(kIris, eye + glm::vec3(0.0f, 0.0f, 0.0095f), {0.0068f, 0.0068f, 0.0042f},
                            front, Weights(eyeBone), 16, 8);
+            // Pupil: dark, in front of the iris, turning with it.
+            mesh.ellipsoid(kHair, eye + glm::vec3(0.0f, 0.0f, 0.0121f), {0.0029f, 0.0029f, 0.0018f}, front,
+                           Weights(eyeBone), 12, 6);
             // Brow: a dark, slightly arched bar above the eye.
             const glm::mat3 browAxes(glm::normalize(glm::vec3(1, sx * -0.12f, 0)), glm::vec3(0, 1, 0),
                                      glm::vec3(0, 0, 1));
-            mesh.ellipsoid(kHair, eye + glm::vec3(sx * 0.002f, 0.022f, 0.011f), {0.019f, 0.0042f, 0.006f},
+            mesh.ellipsoid(kHair, eye + glm::vec3(sx * 0.002f, 0.022f, 0.0f), {0.019f, 0.0042f, 0.006f},
                            glm::mat3(glm::normalize(glm::vec3(1, 0, sx * -0.25f)), browAxes[1],
                                      glm::normalize(glm::cross(glm::normalize(glm::vec3(1, 0, sx * -0.25f)), browAxes[1]))),
                            Weights(head), 12, 8);
