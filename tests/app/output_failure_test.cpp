@@ -321,6 +321,60 @@ TEST(FrameFolder, ShorterRerenderLeavesNoStaleFrames) {
     EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
 }
 
+// `--out frames/` (tab completion adds the '/'): the frames land in `frames`, first render
+// and re-render alike; the temporary must be a sibling, not a folder inside the target.
+TEST(FrameFolder, TrailingSlashWritesIntoTheFolder) {
+    const fs::path dir = testDir();
+    const fs::path out = dir / "frames";
+    const std::string render = "render-gltf " + shellQuote(kSigner) + " -q --size 32x24 --out " +
+                               shellQuote(out.string() + "/");
+    for (const int frames : {3, 2}) {
+        const CommandResult r = runSignstim(render + " --frames " + std::to_string(frames));
+        ASSERT_EQ(r.status, 0) << r.output;
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(out)) names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        std::vector<std::string> expected = {"frame_00001.png", "frame_00002.png", "frame_00003.png"};
+        expected.resize(static_cast<std::size_t>(frames));
+        EXPECT_EQ(names, expected) << joined(names);
+        EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
+    }
+    // A trailing '/' on a file name asks for a folder and a file at once: a command-line error.
+    const CommandResult r = runSignstim("render-gltf " + shellQuote(kSigner) + " -q --size 32x24 --out " +
+                                        shellQuote((dir / "clip.mp4/").string()));
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("trailing '/'"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "clip.mp4"));
+}
+
+// A frame folder that is a mount point (docker -v, apptainer --bind) cannot be renamed or
+// replaced: the render is staged inside it and moved into place; a shorter re-render leaves no
+// stale frames, and nothing is written beside the folder.
+TEST(FrameFolder, MountPointIsWrittenInside) {
+    const fs::path dir = testDir();
+    const fs::path out = dir / "frames";
+    fs::create_directories(out);
+    SmallDisk mount(out, "4m");
+    MOUNT_OR_SKIP(mount);
+    const std::string render = "render-gltf " + shellQuote(kSigner) + " -q --size 32x24 --out " +
+                               shellQuote(out.string());
+    for (const int frames : {4, 2}) {
+        const CommandResult r = runSignstim(render + " --frames " + std::to_string(frames));
+        ASSERT_EQ(r.status, 0) << r.output;
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(out)) names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        std::vector<std::string> expected = {"frame_00001.png", "frame_00002.png", "frame_00003.png",
+                                             "frame_00004.png"};
+        expected.resize(static_cast<std::size_t>(frames));
+        EXPECT_EQ(names, expected) << joined(names);
+        EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
+        std::vector<std::string> beside;
+        for (const auto& entry : fs::directory_iterator(dir)) beside.push_back(entry.path().filename().string());
+        EXPECT_EQ(beside, std::vector<std::string>{"frames"}) << joined(beside);
+    }
+}
+
 TEST(FrameFolder, FolderHoldingOtherFilesIsRefusedBeforeRendering) {
     const fs::path dir = testDir();
     const fs::path out = dir / "mine";
