@@ -464,6 +464,44 @@ TEST(FrameFolder, FolderHoldingOtherFilesIsRefusedBeforeRendering) {
     EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
 }
 
+// ---- several outputs: a demo folder with a manifest is complete ----------------------------
+
+// A re-run overwrites the files an earlier manifest lists: the earlier manifest goes first, so
+// a re-run that fails part-way leaves no manifest over mixed contents.
+TEST(Demo, FailedRerunLeavesNoManifest) {
+    const fs::path dir = testDir();
+    const fs::path out = dir / "demo";
+    const std::string demo = "demo --verbs ASK --panel-size 64x64 --fps 10 --msaa 1 --quiet --out " +
+                             shellQuote(out.string());
+    CommandResult r = runSignstim(demo);
+    ASSERT_EQ(r.status, 0) << r.output;
+    ASSERT_TRUE(fs::exists(out / "manifest.json"));
+    // The verb's video cannot be put in place on the re-run (a folder holds its name), after
+    // the gallery has been written again.
+    fs::path movie;
+    for (const auto& entry : fs::directory_iterator(out / "verbs"))
+        if (entry.path().extension() == ".mp4") movie = entry.path();
+    ASSERT_FALSE(movie.empty());
+    fs::remove(movie);
+    fs::create_directories(movie / "blocker");
+    r = runSignstim(demo);
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find(movie.string() + ": cannot write: "), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(out / "handshapes.png"));
+    EXPECT_FALSE(fs::exists(out / "manifest.json"));
+    EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
+}
+
+// ---- bench: a refused write is exit 3, not an internal error -------------------------------
+
+TEST(Bench, UnwritableScratchFolderIsAWriteError) {
+    const CommandResult r =
+        runSignstim("bench render --quick --frames 2 --rounds 1", Capture::StdoutAndStderr, "TMPDIR=/proc");
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find("/proc/signstim-bench-"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+}
+
 // ---- 6. signals ----------------------------------------------------------------------------
 // The renders are long (thousands of frames at 160x120) so the signal always lands mid-render.
 
