@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -125,6 +126,14 @@ void runDemo(const DemoOptions& o) {
     const fs::path root(o.out);
     ensureWritableDirectory(root);
     ensureWritableDirectory(root / "verbs");
+    // A manifest says "this folder is complete" (docs/errors.md). The files it lists are about
+    // to be overwritten, so an earlier one goes before the first of them; the new one is
+    // written last. A run that fails from here on leaves no manifest.
+    const fs::path manifestFile = root / "manifest.json";
+    if (::unlink(manifestFile.c_str()) != 0 && errno != ENOENT) {
+        const int error = errno;
+        throw IoError(manifestFile.string(), "cannot remove the earlier manifest", error);
+    }
     nlohmann::json files = nlohmann::json::array();
 
     // 1. The handshape gallery.
@@ -198,7 +207,7 @@ void runDemo(const DemoOptions& o) {
     manifest["note"] = "Point and vector versions come from models trained on the synthetic reference corpus "
                        "(scenes/corpus/reference_corpus.csv), not on motion capture.";
     manifest["files"] = files;
-    writeFileAtomic(root / "manifest.json", manifest.dump(2) + "\n");
+    writeFileAtomic(manifestFile, manifest.dump(2) + "\n");
 }
 
 }  // namespace

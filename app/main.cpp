@@ -5,6 +5,7 @@
 #include "common/error.hpp"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -32,6 +33,12 @@ int checkStandardOutput() {
 
 int main(int argc, char** argv) {
     using namespace signstim;
+    // A closed pipe on stdout or stderr (`signstim ... | head`, a dead `tee`) must not kill the
+    // run at a printf, skipping the cleanup and orphaning ffmpeg: with SIGPIPE ignored the
+    // write fails with EPIPE instead. stdout is checked at the end (exit 3, "Broken pipe");
+    // progress lines on stderr are best effort and their failure is ignored (docs/errors.md).
+    // Before any thread exists, so every thread ignores it; children get the default back.
+    std::signal(SIGPIPE, SIG_IGN);
     // First, before any thread exists: signals then reach only the thread that cleans up.
     startInterruptHandling();
     CLI::App root{

@@ -10,6 +10,8 @@
 // to other load). With frame sinks (PNG sequence, MP4) a second table gives each stage
 // alone and end to end, beside the slower stage, the serial sum and the shared-CPU bound.
 #include "app/commands.hpp"
+#include "common/atomic_file.hpp"
+#include "common/cleanup.hpp"
 #include "common/error.hpp"
 #include "renderer/frame_sink.hpp"
 #include "renderer/procedural.hpp"
@@ -17,9 +19,11 @@
 #include "renderer/vk_raw_baseline.hpp"
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -226,8 +230,12 @@ void runRenderBench(const BenchSettings& settings) {
                 std::erase(msaaCounts, msaa);
         }
     }
-    const auto scratch = std::filesystem::temp_directory_path() /
-                         ("signstim-bench-" + std::to_string(::getpid()));
+    // The sinks' scratch folder, in the system's temporary folder ($TMPDIR): a refused write
+    // there is the environment's problem (IoError, exit 3), not a bug.
+    std::error_code noTemporaryFolder;
+    std::filesystem::path temporaryFolder = std::filesystem::temp_directory_path(noTemporaryFolder);
+    if (noTemporaryFolder) temporaryFolder = "/tmp";
+    const auto scratch = temporaryFolder / ("signstim-bench-" + std::to_string(::getpid()));
     std::printf(
         "fps = frames per second (best of %u interleaved rounds); cpu = CPU ms per frame, all "
         "threads (lowest of the rounds). raw-lit = minimal loop with the renderer's shaders and "
@@ -293,7 +301,28 @@ void runRenderBench(const BenchSettings& settings) {
                 }
                 auto discard = render::makeDiscardSink();
                 const Figure renderAlone = measurePipelined(renderer, moving, frames, discard.get());
-                std::filesystem::create_directories(scratch);
+                {
+                    // Registered, so an interrupted bench removes it with the sinks' outputs.
+                    CleanupLock lock;
+                    if (::mkdir(scratch.c_str(), 0777) != 0 && errno != EEXIST) {
+                        const int error = errno;
+                        throw IoError(scratch.string(), "cannot write", error);
+                    }
+                    lock.addTemporary(scratch);
+                }
+                // Removed on every way out, a failed sink's exception included.
+                struct ScratchRemover {
+                    const std::filesystem::path& folder;
+                    std::error_code error;
+                    void remove() {
+                        std::filesystem::remove_all(folder, error);
+                        CleanupLock{}.removeTemporary(folder);
+                    }
+                    ~ScratchRemover() {
+                        if (std::filesystem::exists(folder, error)) remove();
+                    }
+                } remover{scratch, {}};
+                ensureWritableDirectory(scratch);  // checks that files can be created in it
                 SinkFigures png, mp4;
                 {
                     auto sink = render::makePngSequenceSink(scratch / "png-alone");
@@ -311,7 +340,8 @@ void runRenderBench(const BenchSettings& settings) {
                 } catch (const EnvironmentError& error) {
                     std::fprintf(stderr, "signstim: +MP4 skipped: %s\n", error.what());
                 }
-                std::filesystem::remove_all(scratch);
+                remover.remove();
+                if (remover.error) throw IoError(scratch.string(), "cannot remove", remover.error.message());
                 char head[96];
                 std::snprintf(head, sizeof head, "| %4ux%-4u | %ux   | %9u | %6.0f | %6.2f |",
                               size.width, size.height, msaa, shown, renderAlone.fps,

@@ -3,13 +3,17 @@
 #include "common/cleanup.hpp"
 #include "common/error.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fcntl.h>
+#include <set>
 #include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
+#include <vector>
 
 namespace signstim {
 namespace fs = std::filesystem;
@@ -31,11 +35,16 @@ int createRegistered(const fs::path& path, const fs::path& name) {
     return descriptor;
 }
 
-void removeRegistered(const fs::path& path) {
+// Removes a registered temporary, then forgets it. The removal runs without the cleanup lock:
+// removing a large folder (an abandoned or replaced render) can take seconds, and a signal
+// arriving meanwhile must not wait for it. Removing creates nothing, so the design in
+// common/cleanup.hpp still holds; a cleanup racing with this removes what is left.
+std::error_code removeRegistered(const fs::path& path) {
+    std::error_code ec;
+    fs::remove_all(path, ec);
     CleanupLock lock;
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
     lock.removeTemporary(path);
+    return ec;
 }
 
 // All of `bytes` to `descriptor`: 0, or the errno of the write that failed.
@@ -54,9 +63,12 @@ int writeAll(int descriptor, std::string_view bytes) {
     return 0;
 }
 
-// close() can report a write that failed late (NFS, quotas): it is a write error too.
+// close() can report a write that failed late (NFS, quotas): it is a write error too. EINTR
+// is not: Linux has released the descriptor by then (retrying could close another thread's
+// new file), and the data went wherever it was going to go.
 int closeChecked(int descriptor) {
-    return ::close(descriptor) == 0 ? 0 : errno;
+    if (::close(descriptor) == 0 || errno == EINTR) return 0;
+    return errno;
 }
 
 void createParents(const fs::path& dir, const fs::path& name) {
@@ -81,18 +93,60 @@ void probeFolder(const fs::path& dir, const fs::path& name) {
     if (error != 0) throw IoError(name.string(), kCannotWrite, error);
 }
 
+// True when `a` is `b` or inside it, comparing the folders as the system resolves them.
+bool within(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    const fs::path inner = fs::weakly_canonical(fs::absolute(a, ec), ec);
+    const fs::path outer = fs::weakly_canonical(fs::absolute(b, ec), ec);
+    return std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end()).first == outer.end();
+}
+
+// The name a frame folder is staged under when the folder is a mount point (see
+// TemporaryFolder): inside it, so that the frames can be renamed into place.
+const char* const kStagingName = ".signstim-frames";
+
 }  // namespace
+
+fs::path withoutTrailingSeparators(const fs::path& path) {
+    std::string text = path.native();
+    while (text.size() > 1 && text.back() == '/') text.pop_back();
+    return text;
+}
+
+bool isMountPoint(const fs::path& dir) {
+    const fs::path folder = withoutTrailingSeparators(dir);
+    struct statx info{};
+    if (::statx(AT_FDCWD, folder.c_str(), 0, STATX_BASIC_STATS, &info) != 0 || !S_ISDIR(info.stx_mode)) return false;
+    // A bind mount of a folder of the same file system has its parent's device number; the
+    // kernel (5.8+) marks the root of every mount.
+    if ((info.stx_attributes_mask & STATX_ATTR_MOUNT_ROOT) != 0) return (info.stx_attributes & STATX_ATTR_MOUNT_ROOT) != 0;
+    const fs::path parent = folder.has_parent_path() ? folder.parent_path() : fs::path(".");
+    struct stat here{}, above{};
+    if (::stat(folder.c_str(), &here) != 0 || ::stat(parent.c_str(), &above) != 0) return false;
+    return here.st_dev != above.st_dev;
+}
 
 fs::path temporaryPathFor(const fs::path& target) {
     static std::atomic<unsigned> counter{0};
-    fs::path tmp = target;
+    // Without the trailing '/' of "frames/": the temporary must be a sibling of the target,
+    // not a file inside it.
+    fs::path tmp = withoutTrailingSeparators(target);
     tmp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
     return tmp;
 }
 
 void ensureWritableDirectory(const fs::path& dir) { probeFolder(dir, dir); }
 
-void checkOutputWritable(const fs::path& target) { probeFolder(target.parent_path(), target); }
+void checkOutputWritable(const fs::path& target) {
+    const fs::path name = withoutTrailingSeparators(target);
+    // A frame folder that is a mount point is written inside itself (TemporaryFolder); its
+    // parent (often read-only in a container) is never written.
+    if (isMountPoint(name)) {
+        probeFolder(name, name);
+        return;
+    }
+    probeFolder(name.parent_path(), name);
+}
 
 void writeFileAtomic(const fs::path& path, std::string_view bytes) {
     createParents(path.parent_path(), path);
@@ -144,8 +198,11 @@ void TemporaryFile::commit() {
     committed_ = true;
 }
 
-TemporaryFolder::TemporaryFolder(fs::path target)
-    : target_(std::move(target)), temporary_(temporaryPathFor(target_)) {
+TemporaryFolder::TemporaryFolder(fs::path target) : target_(withoutTrailingSeparators(target)) {
+    // A mount point (a container's bind mount) cannot be renamed or exchanged, and a sibling
+    // would be on another file system: stage inside it instead (not atomic; see commit()).
+    inside_ = isMountPoint(target_);
+    temporary_ = temporaryPathFor(inside_ ? target_ / kStagingName : target_);
     CleanupLock lock;
     if (::mkdir(temporary_.c_str(), 0777) != 0) {
         const int error = errno;
@@ -159,6 +216,11 @@ TemporaryFolder::~TemporaryFolder() {
 }
 
 void TemporaryFolder::commit() {
+    if (inside_) {
+        commitInside();
+        return;
+    }
+    fs::path old;  // the earlier render, under a registered temporary name, removed below
     {
         CleanupLock lock;
         if (std::rename(temporary_.c_str(), target_.c_str()) == 0) {
@@ -170,12 +232,21 @@ void TemporaryFolder::commit() {
         if (error != ENOTEMPTY && error != EEXIST) throw IoError(target_.string(), kCannotWrite, error);
         // The target holds an earlier render: swap the two in one step, so the target always
         // names a complete folder; the temporary name then holds the old one.
-        if (::renameat2(AT_FDCWD, temporary_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) != 0) {
+        if (::renameat2(AT_FDCWD, temporary_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) == 0) {
+            committed_ = true;
+            old = temporary_;
+        } else {
             const int exchangeError = errno;
+            // EINVAL means "this file system has no exchange" except when one folder is inside
+            // the other, which no fallback can fix either.
+            if (exchangeError == EINVAL && (within(temporary_, target_) || within(target_, temporary_)))
+                throw IoError(target_.string(), kCannotWrite,
+                              "cannot replace a folder by one inside it (" + temporary_.string() + ")");
             if (exchangeError != EINVAL && exchangeError != ENOSYS)
                 throw IoError(target_.string(), kCannotWrite, exchangeError);
             // No atomic exchange on this file system: move the old folder aside (registered, so
-            // an interruption removes it), then the new one in.
+            // an interruption removes it), then the new one in. Between the two renames the
+            // target does not exist (docs/errors.md).
             const fs::path aside = temporaryPathFor(target_);
             if (std::rename(target_.c_str(), aside.c_str()) != 0) {
                 const int asideError = errno;
@@ -184,18 +255,61 @@ void TemporaryFolder::commit() {
             lock.addTemporary(aside);
             if (std::rename(temporary_.c_str(), target_.c_str()) != 0) {
                 const int renameError = errno;
-                std::rename(aside.c_str(), target_.c_str());  // put the old one back
+                if (std::rename(aside.c_str(), target_.c_str()) != 0) {
+                    const int restoreError = errno;
+                    // The only copy of the earlier render: never delete it; say where it is.
+                    lock.removeTemporary(aside);
+                    throw IoError(target_.string(), kCannotWrite,
+                                  std::string(std::strerror(renameError)) +
+                                      "; the earlier render could not be put back (" + std::strerror(restoreError) +
+                                      ") and is kept as " + aside.string());
+                }
                 lock.removeTemporary(aside);
                 throw IoError(target_.string(), kCannotWrite, renameError);
             }
             lock.removeTemporary(temporary_);
             committed_ = true;
-            temporary_ = aside;  // the old render, removed below
+            old = aside;
         }
-        committed_ = true;
     }
-    // The old render, under a registered temporary name.
-    removeRegistered(temporary_);
+    // Outside the lock (removeRegistered): a big old render must not delay a signal's cleanup.
+    if (const std::error_code ec = removeRegistered(old))
+        throw IoError(target_.string(), "the new render is complete, but the earlier one could not be removed (it is "
+                                        "left as " + old.string() + ")",
+                      ec.message());
+}
+
+void TemporaryFolder::commitInside() {
+    // Each frame is renamed onto its final name (one atomic step per file), then frames of an
+    // earlier, longer render are removed. The folder as a whole is not replaced atomically: an
+    // interruption here leaves new and earlier frames mixed (docs/errors.md).
+    std::vector<fs::path> staged;
+    std::error_code ec;
+    for (fs::directory_iterator it(temporary_, ec), end; !ec && it != end; it.increment(ec)) staged.push_back(it->path());
+    if (ec) throw IoError(target_.string(), "cannot read", ec.message());
+    std::set<fs::path> fresh;
+    for (const fs::path& file : staged) {
+        const fs::path destination = target_ / file.filename();
+        if (std::rename(file.c_str(), destination.c_str()) != 0) {
+            const int error = errno;
+            throw IoError(destination.string(), kCannotWrite, error);
+        }
+        fresh.insert(file.filename());
+    }
+    std::vector<fs::path> stale;
+    for (fs::directory_iterator it(target_, ec), end; !ec && it != end; it.increment(ec)) {
+        const fs::path name = it->path().filename();
+        // Staging folders (this one, another run's) are not an earlier render's frames.
+        if (fresh.count(name) == 0 && name.string().rfind(kStagingName, 0) != 0) stale.push_back(it->path());
+    }
+    if (ec) throw IoError(target_.string(), "cannot read", ec.message());
+    for (const fs::path& file : stale)
+        if (fs::remove(file, ec); ec) throw IoError(file.string(), "cannot remove an earlier frame", ec.message());
+    committed_ = true;
+    if (const std::error_code removeError = removeRegistered(temporary_))
+        throw IoError(target_.string(), "the new render is complete, but its empty staging folder could not be "
+                                        "removed (" + temporary_.string() + ")",
+                      removeError.message());
 }
 
 }  // namespace signstim

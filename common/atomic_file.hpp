@@ -28,8 +28,16 @@ void writeNewFile(const std::filesystem::path& path, std::string_view bytes,
                   const std::filesystem::path& nameInMessages = {});
 
 // A temporary name next to `target` (same folder, so rename() is atomic), unique per process
-// and call: TARGET.tmp-PID-N.
+// and call: TARGET.tmp-PID-N. Trailing separators of `target` are ignored ("frames/").
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
+
+// `path` without trailing '/' ("frames/" -> "frames"; "/" stays): tab completion adds one to
+// folder names, and a temporary built from "frames/" would land inside the folder.
+std::filesystem::path withoutTrailingSeparators(const std::filesystem::path& path);
+
+// True when `dir` is an existing folder that is the root of a mount (a container's bind mount,
+// a tmpfs): it cannot be renamed or replaced, only written inside.
+bool isMountPoint(const std::filesystem::path& dir);
 
 // Makes sure `dir` exists (creating it and its parents) and that a file can be created in it,
 // by creating and removing one. Throws IoError naming `dir` with the system's reason. Call
@@ -37,7 +45,8 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 void ensureWritableDirectory(const std::filesystem::path& dir);
 
 // The same check for an output `target` (a file, or a frame folder written as a unit): its
-// parent folder is created if missing and must accept a new file. Errors name `target`.
+// parent folder is created if missing and must accept a new file; for a frame folder that is
+// a mount point (isMountPoint), the folder itself must. Errors name `target`.
 void checkOutputWritable(const std::filesystem::path& target);
 
 // A temporary file beside `target`, created empty (O_EXCL) and registered for removal on a
@@ -69,7 +78,12 @@ private:
 // A temporary folder beside `target` (TARGET.tmp-PID-N), created and registered for removal
 // on a signal; removed with its contents when destroyed without commit(). commit() puts it in
 // place of `target`: renamed when `target` does not exist, else exchanged with it atomically
-// and the old folder removed (the caller checks beforehand that replacing it is wanted).
+// (renameat2 RENAME_EXCHANGE) and the old folder removed (the caller checks beforehand that
+// replacing it is wanted). Where the file system has no exchange, the old folder is renamed
+// aside and the new one in (two steps). When `target` is a mount point, the temporary folder
+// is inside it (TARGET/.signstim-frames.tmp-PID-N) and commit() renames each file into
+// `target` and removes the files it did not write: each file is replaced atomically, the
+// folder is not.
 class TemporaryFolder {
 public:
     explicit TemporaryFolder(std::filesystem::path target);
@@ -82,8 +96,11 @@ public:
     void commit();
 
 private:
+    void commitInside();
+
     std::filesystem::path target_;
     std::filesystem::path temporary_;
+    bool inside_ = false;  // staged inside a mount-point target
     bool committed_ = false;
 };
 

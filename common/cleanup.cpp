@@ -115,8 +115,17 @@ void initChildSpawnAttributes(posix_spawnattr_t* attributes) {
     sigset_t none;
     sigemptyset(&none);
     posix_spawnattr_setsigmask(attributes, &none);
-    posix_spawnattr_setsigdefault(attributes, &registry().handled);
-    posix_spawnattr_setflags(attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+    // main() ignores SIGPIPE, and an ignored signal stays ignored across exec: the child gets
+    // the default back, as it would from a shell.
+    sigset_t defaults = registry().handled;
+    sigaddset(&defaults, SIGPIPE);
+    posix_spawnattr_setsigdefault(attributes, &defaults);
+    // Its own process group: a terminal's Ctrl-C (sent to the foreground group) and a batch
+    // system's SIGTERM to the job's group then reach signstim alone, whose cleanup ends the
+    // child after it has stopped writing; a child that got the signal too would fail first
+    // and could turn the interruption into an "ffmpeg failed" error.
+    posix_spawnattr_setpgroup(attributes, 0);
+    posix_spawnattr_setflags(attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETPGROUP);
 }
 
 void startInterruptHandling() {

@@ -50,9 +50,11 @@ private:
 // (as waitpid gives it; -1 if it could not be waited for).
 int waitForChild(pid_t pid);
 
-// Spawn attributes for a child: no blocked signals and default actions for the signals
-// signstim handles (a child inherits the blocked mask otherwise, and would ignore SIGTERM).
-// Call posix_spawnattr_destroy afterwards.
+// Spawn attributes for a child: no blocked signals, default actions for the signals signstim
+// handles or ignores (a child inherits the blocked mask otherwise, and would ignore SIGTERM;
+// and SIGPIPE, which main() ignores), and a process group of its own (terminal and batch
+// signals reach signstim alone; its cleanup ends the child). Call posix_spawnattr_destroy
+// afterwards.
 void initChildSpawnAttributes(posix_spawnattr_t* attributes);
 
 // Called first in main(): see the design above. Exit status on a signal: 128 + its number

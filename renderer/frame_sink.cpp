@@ -152,8 +152,8 @@ private:
 // nothing or the earlier render untouched, and a shorter re-render leaves no stale frames.
 class PngSequenceSink final : public FrameSink {
 public:
-    PngSequenceSink(fs::path directory, ImageWriteOptions options, unsigned threads)
-        : directory_(std::move(directory)), options_(options),
+    PngSequenceSink(const fs::path& directory, ImageWriteOptions options, unsigned threads)
+        : directory_(withoutTrailingSeparators(directory)), options_(options),
           queue_(2 * std::max(1u, threads)), spares_(2 * std::max(1u, threads) + 2),
           folder_(prepared(directory_, options_)) {
         for (unsigned t = 0; t < std::max(1u, threads); ++t) workers_.emplace_back([this] { run(); });
@@ -319,7 +319,17 @@ std::unique_ptr<FrameSink> makeFrameSink(const fs::path& output, const ImageWrit
 }
 
 OutputKind outputKind(const fs::path& output, const std::string& flag) {
-    const std::string ext = lowerExtension(output);
+    const fs::path name = withoutTrailingSeparators(output);
+    const std::string ext = lowerExtension(name);
+    // "frames/" (as tab completion writes it) is the folder "frames". "a.mp4/" asks for a file
+    // and a folder at once: refused rather than guessed.
+    if (name.native().size() != output.native().size()) {
+        if (ext.empty()) return OutputKind::Folder;
+        throw InputError(kCommandLine, 0, flag,
+                         "'" + output.string() + "': a trailing '/' names a folder, but '" +
+                             name.extension().string() + "' names a file; drop the '/' for a file, or choose a "
+                             "folder name without an extension (frame_00001.png ...)");
+    }
     if (ext == ".mp4") return OutputKind::Video;
     if (ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff") return OutputKind::Image;
     if (ext.empty()) return OutputKind::Folder;
@@ -330,7 +340,8 @@ OutputKind outputKind(const fs::path& output, const std::string& flag) {
                          "without an extension (frame_00001.png ...)");
 }
 
-void checkFrameFolder(const fs::path& directory) {
+void checkFrameFolder(const fs::path& folder) {
+    const fs::path directory = withoutTrailingSeparators(folder);
     std::error_code ec;
     const fs::file_status status = fs::status(directory, ec);
     if (!fs::exists(status)) return;

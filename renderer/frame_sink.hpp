@@ -61,8 +61,9 @@ std::unique_ptr<FrameSink> makeFrameSink(const std::filesystem::path& output,
 enum class OutputKind { Video, Image, Folder };
 
 // What `output` names: .mp4, .png/.exr/.tif/.tiff (case-insensitive), or a folder (no
-// extension). Any other extension is a command-line mistake: InputError naming `flag` (exit
-// 1) that lists what works. Call it before any work.
+// extension; a trailing '/' is allowed: "frames/"). Any other extension, or an extension with
+// a trailing '/' ("a.mp4/"), is a command-line mistake: InputError naming `flag` (exit 1)
+// that says what works. Call it before any work.
 OutputKind outputKind(const std::filesystem::path& output, const std::string& flag = "--out");
 
 // A frame folder may be written only where nothing would be lost: `directory` does not exist,

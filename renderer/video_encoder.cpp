@@ -4,17 +4,17 @@
 #include "common/cleanup.hpp"
 #include "common/error.hpp"
 
-#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
+#include <cstdio>
+#include <mutex>
 #include <numeric>
 #include <spawn.h>
 #include <sys/resource.h>
-#include <sstream>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -69,23 +69,14 @@ FrameRate parseFrameRate(std::string_view text, const std::string& source, const
 
 namespace {
 
-std::string tailOf(const fs::path& log, std::size_t maxBytes = 2000) {
-    std::ifstream in(log, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    std::string text = ss.str();
-    if (text.size() > maxBytes) text = "..." + text.substr(text.size() - maxBytes);
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-    return text;
+std::uint64_t bigEndian(const unsigned char* bytes, int count) {
+    std::uint64_t value = 0;
+    for (int i = 0; i < count; ++i) value = value << 8 | bytes[i];
+    return value;
 }
 
-fs::path logPath() {
-    static std::atomic<unsigned> counter{0};
-    std::error_code ec;
-    fs::path dir = fs::temp_directory_path(ec);
-    if (ec) dir = "/tmp";
-    return dir / ("signstim-ffmpeg-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".log");
-}
+// Reads `fd` (ffmpeg's stderr) to its end, line by line, into `messages`; closes it.
+void readMessages(int fd, VideoEncoder::Messages& messages);
 
 // Writes all of `data` to `fd`; false on a broken pipe or other error. SIGPIPE is blocked for
 // this thread meanwhile (and a pending one consumed) so a dying ffmpeg cannot kill us.
@@ -115,6 +106,108 @@ bool writeAll(int fd, const std::uint8_t* data, std::size_t size) {
 
 }  // namespace
 
+// Lines are kept as they come: error lines (the first few, which say why), the other lines
+// (warnings, passed on to the user), and the last few KB (shown when the video fails).
+struct VideoEncoder::Messages {
+    static constexpr std::size_t kTailBytes = 4000, kMostLines = 20;
+    std::mutex mutex;
+    std::string tail;
+    std::vector<std::string> errors, warnings;
+    std::size_t warningsDropped = 0;
+
+    void add(const std::string& line) {
+        if (line.empty()) return;
+        std::lock_guard lock(mutex);
+        tail += line + "\n";
+        if (tail.size() > kTailBytes) tail = "..." + tail.substr(tail.size() - kTailBytes);
+        std::vector<std::string>& list = isFfmpegErrorLine(line) ? errors : warnings;
+        if (list.size() < kMostLines) list.push_back(line);
+        else if (&list == &warnings) ++warningsDropped;
+    }
+    std::string text() {
+        std::lock_guard lock(mutex);
+        std::string text = tail;
+        while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+        return text;
+    }
+};
+
+namespace {
+
+void readMessages(int fd, VideoEncoder::Messages& messages) {
+    std::string line;
+    char buffer[4096];
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;  // end: ffmpeg has exited (or the pipe failed: nothing more to read)
+        for (ssize_t i = 0; i < n; ++i) {
+            if (buffer[i] == '\n' || buffer[i] == '\r') {
+                messages.add(line);
+                line.clear();
+            } else {
+                line += buffer[i];
+            }
+        }
+    }
+    messages.add(line);
+    ::close(fd);
+}
+
+}  // namespace
+
+bool isFfmpegErrorLine(std::string_view line) {
+    for (const std::string_view pattern : {"Error", "error", "No space left", "Invalid", "failed"})
+        if (line.find(pattern) != std::string_view::npos) return true;
+    return false;
+}
+
+std::string checkMp4(const fs::path& file) {
+    const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return std::string("cannot read it: ") + std::strerror(errno);
+    struct stat info{};
+    std::string problem;
+    if (::fstat(fd, &info) != 0) problem = std::string("cannot read it: ") + std::strerror(errno);
+    const auto size = static_cast<std::uint64_t>(info.st_size);
+    if (problem.empty() && size == 0) problem = "it is empty";
+    bool index = false;
+    for (std::uint64_t offset = 0; problem.empty() && offset < size;) {
+        unsigned char header[16];
+        const std::uint64_t left = size - offset;
+        const ssize_t got = ::pread(fd, header, left < 16 ? static_cast<std::size_t>(left) : 16, static_cast<off_t>(offset));
+        if (got < 8) {
+            problem = got < 0 ? std::string("cannot read it: ") + std::strerror(errno)
+                              : "it ends inside a box header (truncated)";
+            break;
+        }
+        const std::string type(reinterpret_cast<const char*>(header) + 4, 4);
+        std::uint64_t boxSize = bigEndian(header, 4), headerSize = 8;
+        if (boxSize == 1) {
+            if (got < 16) {
+                problem = "it ends inside a box header (truncated)";
+                break;
+            }
+            boxSize = bigEndian(header + 8, 8);
+            headerSize = 16;
+        } else if (boxSize == 0) {
+            boxSize = left;  // "to the end of the file"
+        }
+        if (boxSize < headerSize) {
+            problem = "box '" + type + "' has an invalid size";
+            break;
+        }
+        if (boxSize > left) {
+            problem = "box '" + type + "' runs past the end of the file (truncated)";
+            break;
+        }
+        index = index || type == "moov";
+        offset += boxSize;
+    }
+    ::close(fd);
+    if (problem.empty() && !index) problem = "it has no 'moov' box (the index ffmpeg writes last is missing)";
+    return problem;
+}
+
 VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t height, PixelFormat format,
                            const VideoOptions& options)
     : output_(std::move(output)), width_(width), height_(height), format_(format) {
@@ -127,10 +220,15 @@ VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t h
     checkOutputWritable(output_);
     // ffmpeg overwrites this (-y); creating it here registers it for removal on a signal.
     temporary_ = std::make_unique<TemporaryFile>(output_);
-    stderrLog_ = std::make_unique<TemporaryFile>(logPath());
 
-    int fds[2];
+    int fds[2], errorFds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) throw EnvironmentError(std::string("pipe: ") + std::strerror(errno));
+    if (::pipe2(errorFds, O_CLOEXEC) != 0) {
+        const int error = errno;
+        ::close(fds[0]);
+        ::close(fds[1]);
+        throw EnvironmentError(std::string("pipe: ") + std::strerror(error));
+    }
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
     const std::string rate = options.frameRate.text();
     // SPEC §5: H.264, yuv420p, constant frame rate, +faststart. RGB -> BT.709 limited range,
@@ -152,7 +250,7 @@ VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t h
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_adddup2(&actions, stderrLog_->descriptor(), STDERR_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, errorFds[1], STDERR_FILENO);
     posix_spawnattr_t attributes;
     initChildSpawnAttributes(&attributes);
     pid_t pid = -1;
@@ -167,10 +265,11 @@ VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t h
     posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     ::close(fds[0]);
+    ::close(errorFds[1]);  // ffmpeg holds the only writing end: the reader sees the end when it exits
     if (rc != 0) {
         ::close(fds[1]);
+        ::close(errorFds[0]);
         temporary_.reset();
-        stderrLog_.reset();
         if (rc == ENOENT)
             throw EnvironmentError("'" + options.ffmpeg + "' not found: MP4 output needs ffmpeg with libx264 " +
                                    "(Debian/Ubuntu: apt install ffmpeg); or write PNG frames instead");
@@ -178,6 +277,8 @@ VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t h
     }
     child_ = pid;
     pipe_ = fds[1];
+    messages_ = std::make_shared<Messages>();
+    stderrReader_ = std::thread([fd = errorFds[0], messages = messages_] { readMessages(fd, *messages); });
     // Best effort (ffmpeg's encoder threads, started later, inherit it); failure is harmless.
     if (options.niceness > 0)
         (void)setpriority(PRIO_PROCESS, static_cast<id_t>(pid),
@@ -198,8 +299,12 @@ void VideoEncoder::abandon() noexcept {
         waitForChild(child_);
         child_ = -1;
     }
-    temporary_.reset();  // removes the temporary files
-    stderrLog_.reset();
+    joinStderrReader();
+    temporary_.reset();  // removes the temporary file
+}
+
+void VideoEncoder::joinStderrReader() noexcept {
+    if (stderrReader_.joinable()) stderrReader_.join();
 }
 
 void VideoEncoder::fail(const std::string& what) {
@@ -212,7 +317,8 @@ void VideoEncoder::fail(const std::string& what) {
         waitForChild(child_);
         child_ = -1;
     }
-    const std::string log = stderrLog_ ? tailOf(stderrLog_->path()) : std::string();
+    joinStderrReader();
+    const std::string log = messages_ ? messages_->text() : std::string();
     abandon();
     finished_ = true;
     throw EnvironmentError("ffmpeg failed writing " + output_.string() + ": " + what +
@@ -235,13 +341,23 @@ void VideoEncoder::finish() {
     pipe_ = -1;
     const int status = waitForChild(child_);
     child_ = -1;
-    if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        fail(status != -1 && WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
-                                               : std::string("killed by a signal"));
+    joinStderrReader();
+    if (status == -1) fail("its exit status could not be read (waitpid failed)");
+    if (WIFSIGNALED(status))
+        fail("it was killed by signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")");
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail("exit status " + std::to_string(WEXITSTATUS(status)));
     // ffmpeg 5 exits 0 after "Error writing trailer of ...: No space left on device" (a
-    // truncated file). It runs with -loglevel error, so anything it said is an error.
-    if (!tailOf(stderrLog_->path()).empty()) fail("it reported an error");
-    stderrLog_.reset();
+    // truncated file): its error lines fail the video, and so does a file that is not a
+    // complete MP4 (in case the message was lost).
+    if (!messages_->errors.empty()) fail("it reported an error");
+    if (const std::string problem = checkMp4(temporary_->path()); !problem.empty())
+        fail("the file it wrote is not a complete MP4: " + problem);
+    // Anything else it (or a wrapper, or the dynamic loader) said is passed on, not fatal.
+    for (const std::string& line : messages_->warnings)
+        std::fprintf(stderr, "signstim: warning: ffmpeg (writing %s): %s\n", output_.string().c_str(), line.c_str());
+    if (messages_->warningsDropped > 0)
+        std::fprintf(stderr, "signstim: warning: ffmpeg (writing %s): ... and %zu more lines\n",
+                     output_.string().c_str(), messages_->warningsDropped);
     finished_ = true;
     temporary_->commit();
 }

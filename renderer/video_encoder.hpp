@@ -1,8 +1,13 @@
 #pragma once
 // MP4 output (SPEC §5): H.264 (libx264), yuv420p, even width and height, constant frame rate,
-// +faststart. Raw RGBA frames are piped to an `ffmpeg` child process (posix_spawn, no shell);
-// ffmpeg writes a temporary file beside the target that is renamed only when it succeeded,
-// so a failure never leaves a half-written .mp4.
+// +faststart. Raw RGBA frames are piped to an `ffmpeg` child process (posix_spawn, no shell,
+// its own process group so a terminal's Ctrl-C reaches only signstim, which ends it); ffmpeg
+// writes a temporary file beside the target that is renamed only when it succeeded, so a
+// failure never leaves a half-written .mp4.
+// "Succeeded" (docs/errors.md): ffmpeg exited 0, said nothing that looks like an error on its
+// stderr (read through a pipe, never a file: a full /tmp must not hide "Error writing
+// trailer"), and the file it wrote is a complete MP4 (checkMp4: ffmpeg 5 exits 0 after a
+// failed trailer write). Other stderr lines are passed on as warnings.
 #include "common/atomic_file.hpp"
 #include "renderer/image.hpp"
 
@@ -13,6 +18,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <thread>
 
 namespace signstim::render {
 
@@ -39,6 +45,17 @@ struct VideoOptions {
     int niceness = 0;
 };
 
+// Empty when `file` is a complete MP4 at its top level: its boxes ([4-byte big-endian size]
+// [4-char type], size 1: a 64-bit size follows, 0: to the end of the file) tile the file
+// exactly and one of them is 'moov' (the index, written last; +faststart then moves it before
+// 'mdat'). Otherwise what is wrong ("no 'moov' box", "'mdat' runs past the end of the file").
+std::string checkMp4(const std::filesystem::path& file);
+
+// True for a line of ffmpeg's stderr that reports a failure ("Error writing trailer ...",
+// "No space left on device", "Invalid argument", "Conversion failed!"): case-sensitive, so a
+// dynamic loader's "ERROR: ld.so: ... cannot be preloaded ...: ignored." is a warning.
+bool isFfmpegErrorLine(std::string_view line);
+
 class VideoEncoder {
 public:
     // Starts ffmpeg. Odd width or height is refused (InputError naming the size: yuv420p
@@ -58,14 +75,19 @@ public:
     std::uint64_t framesWritten() const { return frames_; }
     const std::filesystem::path& output() const { return output_; }
 
+    struct Messages;  // what ffmpeg said on stderr, collected by stderrReader_
+
 private:
     void abandon() noexcept;
+    void joinStderrReader() noexcept;
     [[noreturn]] void fail(const std::string& what);
 
     std::filesystem::path output_;
-    // The MP4 being written (ffmpeg's output) and ffmpeg's stderr; both removed unless the
-    // video is committed.
-    std::unique_ptr<TemporaryFile> temporary_, stderrLog_;
+    // The MP4 being written (ffmpeg's output); removed unless the video is committed.
+    std::unique_ptr<TemporaryFile> temporary_;
+    // ffmpeg's stderr: read to its end by a thread, so ffmpeg never blocks on a full pipe.
+    std::shared_ptr<Messages> messages_;
+    std::thread stderrReader_;
     std::uint32_t width_ = 0, height_ = 0;
     PixelFormat format_ = PixelFormat::Rgba8;
     pid_t child_ = -1;

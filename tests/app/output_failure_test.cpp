@@ -101,7 +101,8 @@ struct Running {
 };
 
 // Started with SIGINT and SIGTERM at their defaults: a test runner started in the background
-// (`ctest &`) ignores SIGINT, and an ignored signal stays ignored across exec.
+// (`ctest &`) ignores SIGINT, and an ignored signal stays ignored across exec. In a process
+// group of its own, so a signal can go to the whole group, as a terminal's Ctrl-C does.
 Running start(const std::vector<std::string>& arguments, const fs::path& log) {
     std::vector<std::string> words = {SIGNSTIM_EXE};
     words.insert(words.end(), arguments.begin(), arguments.end());
@@ -121,7 +122,8 @@ Running start(const std::vector<std::string>& arguments, const fs::path& log) {
     sigemptyset(&none);
     posix_spawnattr_setsigdefault(&attributes, &defaults);
     posix_spawnattr_setsigmask(&attributes, &none);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+    posix_spawnattr_setpgroup(&attributes, 0);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP);
     Running running;
     running.log = log;
     if (posix_spawn(&running.pid, SIGNSTIM_EXE, &actions, &attributes, argv.data(), environ) != 0) running.pid = -1;
@@ -171,7 +173,8 @@ bool processEnded(pid_t pid) {
 }
 
 // Starts a long render into `output` inside `dir`, waits until its temporary exists (and its
-// ffmpeg when `video`), sends `signalNumber`, and checks what is left.
+// ffmpeg when `video`), sends `signalNumber` to its whole process group (as a terminal's
+// Ctrl-C and a batch system do), and checks what is left.
 void interruptAndCheck(const std::vector<std::string>& arguments, const fs::path& dir, const fs::path& output,
                        int signalNumber, bool video) {
     const fs::path log = dir.parent_path() / (dir.filename().string() + ".log");
@@ -184,10 +187,20 @@ void interruptAndCheck(const std::vector<std::string>& arguments, const fs::path
         for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) ++n;
         return n;
     };
-    const bool begun = pollUntil([&] { return !temporariesIn(dir).empty() && (video || entries() >= 2); }, 60.0);
+    // For a video, the MP4's temporary (the write probe, also a *.tmp-*, comes and goes first).
+    const std::string videoTemporary = output.filename().string() + ".tmp-";
+    auto videoBegun = [&] {
+        for (const std::string& path : temporariesIn(dir))
+            if (fs::path(path).filename().string().rfind(videoTemporary, 0) == 0) return true;
+        return false;
+    };
+    const bool begun = pollUntil([&] { return video ? videoBegun() : !temporariesIn(dir).empty() && entries() >= 2; },
+                                 60.0);
     std::vector<pid_t> encoders;
     if (begun && video) pollUntil([&] { return !(encoders = childrenOf(running.pid)).empty(); }, 10.0);
-    ::kill(running.pid, signalNumber);
+    // ffmpeg has a process group of its own: the group's signal reaches signstim alone.
+    for (const pid_t encoder : encoders) EXPECT_NE(::getpgid(encoder), running.pid) << "ffmpeg " << encoder;
+    ::kill(-running.pid, signalNumber);
     const int status = waitFor(running, 30.0);
     const std::string said = readAll(log);
     ASSERT_TRUE(begun) << "no temporary appeared in " << dir << "; it said:\n" << said;
@@ -201,7 +214,8 @@ void interruptAndCheck(const std::vector<std::string>& arguments, const fs::path
     EXPECT_FALSE(fs::exists(output)) << output;
     EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
     for (const pid_t encoder : encoders) EXPECT_TRUE(processEnded(encoder)) << "ffmpeg " << encoder << " still runs";
-    // ffmpeg's stderr log (in the temporary folder of the system) is a registered temporary too.
+    // ffmpeg's stderr is a pipe; no log file (an earlier design's) may appear in the system's
+    // temporary folder.
     const std::string logPrefix = "signstim-ffmpeg-" + std::to_string(running.pid) + "-";
     for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
         EXPECT_NE(entry.path().filename().string().rfind(logPrefix, 0), 0u) << entry.path();
@@ -285,6 +299,66 @@ TEST(StandardOutput, DevFullIsAnError) {
     }
 }
 
+// ---- 3. a closed pipe on stdout or stderr -------------------------------------------------
+
+namespace {
+
+// Runs signstim with `closed` (stdout or stderr) on a pipe whose reading end is already
+// closed (`| head` that has exited, a dead `tee`); the other stream goes to `log`. Status as
+// waitFor gives it (128 + signal + 1000 when killed by a signal).
+int runIntoClosedPipe(const std::vector<std::string>& arguments, int closed, const fs::path& log) {
+    int fds[2];
+    if (::pipe(fds) != 0) return -1;
+    ::close(fds[0]);
+    std::vector<std::string> words = {SIGNSTIM_EXE};
+    words.insert(words.end(), arguments.begin(), arguments.end());
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, fds[1], closed);
+    posix_spawn_file_actions_addopen(&actions, closed == STDOUT_FILENO ? STDERR_FILENO : STDOUT_FILENO, log.c_str(),
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    sigset_t defaults;
+    sigemptyset(&defaults);
+    sigaddset(&defaults, SIGPIPE);  // as a shell starts it, whatever the test runner does
+    posix_spawnattr_setsigdefault(&attributes, &defaults);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+    Running running;
+    const int rc = posix_spawn(&running.pid, SIGNSTIM_EXE, &actions, &attributes, argv.data(), environ);
+    posix_spawnattr_destroy(&attributes);
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(fds[1]);
+    return rc == 0 ? waitFor(running, 120.0) : -1;
+}
+
+}  // namespace
+
+TEST(ClosedPipe, StdoutIsAnErrorNotADeathBySigpipe) {
+    const fs::path dir = testDir();
+    const fs::path log = dir / "stderr.log";
+    const int status = runIntoClosedPipe({"hand", "pose", "--shape", "A", "--json"}, STDOUT_FILENO, log);
+    const std::string said = readAll(log);
+    EXPECT_EQ(status, 3) << "(1141: killed by SIGPIPE)\n" << said;
+    EXPECT_NE(said.find("signstim: error: cannot write to standard output: Broken pipe"), std::string::npos) << said;
+}
+
+// Progress on stderr is best effort: a dead reader does not stop the render or change its
+// result, and no temporary is left.
+TEST(ClosedPipe, StderrDoesNotStopTheRender) {
+    const fs::path dir = testDir();
+    const fs::path out = dir / "ask.mp4";
+    const int status = runIntoClosedPipe({"verb", "ASK", "--subject", "0.9", "--object", "-0.6", "--version", "point",
+                                          "--size", "64x48", "--fps", "10", "--out", out.string()},
+                                         STDERR_FILENO, dir.parent_path() / (dir.filename().string() + ".log"));
+    EXPECT_EQ(status, 0) << "(1141: killed by SIGPIPE)";
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
+}
+
 // ---- 5. an output name no writer handles ---------------------------------------------------
 
 TEST(OutputName, UnknownExtensionIsACommandLineErrorAndCreatesNothing) {
@@ -321,6 +395,60 @@ TEST(FrameFolder, ShorterRerenderLeavesNoStaleFrames) {
     EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
 }
 
+// `--out frames/` (tab completion adds the '/'): the frames land in `frames`, first render
+// and re-render alike; the temporary must be a sibling, not a folder inside the target.
+TEST(FrameFolder, TrailingSlashWritesIntoTheFolder) {
+    const fs::path dir = testDir();
+    const fs::path out = dir / "frames";
+    const std::string render = "render-gltf " + shellQuote(kSigner) + " -q --size 32x24 --out " +
+                               shellQuote(out.string() + "/");
+    for (const int frames : {3, 2}) {
+        const CommandResult r = runSignstim(render + " --frames " + std::to_string(frames));
+        ASSERT_EQ(r.status, 0) << r.output;
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(out)) names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        std::vector<std::string> expected = {"frame_00001.png", "frame_00002.png", "frame_00003.png"};
+        expected.resize(static_cast<std::size_t>(frames));
+        EXPECT_EQ(names, expected) << joined(names);
+        EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
+    }
+    // A trailing '/' on a file name asks for a folder and a file at once: a command-line error.
+    const CommandResult r = runSignstim("render-gltf " + shellQuote(kSigner) + " -q --size 32x24 --out " +
+                                        shellQuote((dir / "clip.mp4/").string()));
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("trailing '/'"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "clip.mp4"));
+}
+
+// A frame folder that is a mount point (docker -v, apptainer --bind) cannot be renamed or
+// replaced: the render is staged inside it and moved into place; a shorter re-render leaves no
+// stale frames, and nothing is written beside the folder.
+TEST(FrameFolder, MountPointIsWrittenInside) {
+    const fs::path dir = testDir();
+    const fs::path out = dir / "frames";
+    fs::create_directories(out);
+    SmallDisk mount(out, "4m");
+    MOUNT_OR_SKIP(mount);
+    const std::string render = "render-gltf " + shellQuote(kSigner) + " -q --size 32x24 --out " +
+                               shellQuote(out.string());
+    for (const int frames : {4, 2}) {
+        const CommandResult r = runSignstim(render + " --frames " + std::to_string(frames));
+        ASSERT_EQ(r.status, 0) << r.output;
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(out)) names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        std::vector<std::string> expected = {"frame_00001.png", "frame_00002.png", "frame_00003.png",
+                                             "frame_00004.png"};
+        expected.resize(static_cast<std::size_t>(frames));
+        EXPECT_EQ(names, expected) << joined(names);
+        EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
+        std::vector<std::string> beside;
+        for (const auto& entry : fs::directory_iterator(dir)) beside.push_back(entry.path().filename().string());
+        EXPECT_EQ(beside, std::vector<std::string>{"frames"}) << joined(beside);
+    }
+}
+
 TEST(FrameFolder, FolderHoldingOtherFilesIsRefusedBeforeRendering) {
     const fs::path dir = testDir();
     const fs::path out = dir / "mine";
@@ -334,6 +462,44 @@ TEST(FrameFolder, FolderHoldingOtherFilesIsRefusedBeforeRendering) {
     EXPECT_EQ(r.output.find("frame "), std::string::npos) << r.output;  // nothing was rendered
     EXPECT_EQ(readAll(out / "notes.txt"), "keep");
     EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
+}
+
+// ---- several outputs: a demo folder with a manifest is complete ----------------------------
+
+// A re-run overwrites the files an earlier manifest lists: the earlier manifest goes first, so
+// a re-run that fails part-way leaves no manifest over mixed contents.
+TEST(Demo, FailedRerunLeavesNoManifest) {
+    const fs::path dir = testDir();
+    const fs::path out = dir / "demo";
+    const std::string demo = "demo --verbs ASK --panel-size 64x64 --fps 10 --msaa 1 --quiet --out " +
+                             shellQuote(out.string());
+    CommandResult r = runSignstim(demo);
+    ASSERT_EQ(r.status, 0) << r.output;
+    ASSERT_TRUE(fs::exists(out / "manifest.json"));
+    // The verb's video cannot be put in place on the re-run (a folder holds its name), after
+    // the gallery has been written again.
+    fs::path movie;
+    for (const auto& entry : fs::directory_iterator(out / "verbs"))
+        if (entry.path().extension() == ".mp4") movie = entry.path();
+    ASSERT_FALSE(movie.empty());
+    fs::remove(movie);
+    fs::create_directories(movie / "blocker");
+    r = runSignstim(demo);
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find(movie.string() + ": cannot write: "), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(out / "handshapes.png"));
+    EXPECT_FALSE(fs::exists(out / "manifest.json"));
+    EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
+}
+
+// ---- bench: a refused write is exit 3, not an internal error -------------------------------
+
+TEST(Bench, UnwritableScratchFolderIsAWriteError) {
+    const CommandResult r =
+        runSignstim("bench render --quick --frames 2 --rounds 1", Capture::StdoutAndStderr, "TMPDIR=/proc");
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find("/proc/signstim-bench-"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
 }
 
 // ---- 6. signals ----------------------------------------------------------------------------

@@ -105,3 +105,25 @@ TEST(AtomicFile, TemporaryFolderReplacesAnEarlierFolderWhole) {
     EXPECT_EQ(readAll(dir / "out" / "new.txt"), "new");
     EXPECT_EQ(fileCount(dir), 1u);
 }
+
+// "frames/" (tab completion): the temporary is a sibling of the folder, never inside it.
+TEST(AtomicFile, TrailingSeparatorIsIgnored) {
+    EXPECT_EQ(withoutTrailingSeparators("out/frames//"), fs::path("out/frames"));
+    EXPECT_EQ(withoutTrailingSeparators("/"), fs::path("/"));
+    const fs::path tmp = temporaryPathFor("out/frames/");
+    EXPECT_EQ(tmp.parent_path(), fs::path("out"));
+    EXPECT_EQ(tmp.filename().string().rfind("frames.tmp-", 0), 0u) << tmp;
+
+    const fs::path dir = freshDir("slash");
+    fs::create_directories(dir / "out");
+    std::ofstream(dir / "out" / "old.txt") << "old";
+    {
+        TemporaryFolder folder(fs::path(dir / "out").string() + "/");
+        EXPECT_EQ(folder.path().parent_path(), dir);
+        std::ofstream(folder.path() / "new.txt") << "new";
+        folder.commit();
+    }
+    EXPECT_EQ(readAll(dir / "out" / "new.txt"), "new");
+    EXPECT_FALSE(fs::exists(dir / "out" / "old.txt"));
+    EXPECT_EQ(fileCount(dir), 1u);
+}

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <csignal>
 #include <fstream>
 #include <cstdio>
 #include <memory>
@@ -336,4 +337,128 @@ TEST(Video, FfmpegTemporariesAreRemovedOnAbandon) {
         EXPECT_EQ(temporaries, 1u);  // ffmpeg's output, registered for removal on a signal
     }
     EXPECT_TRUE(fs::is_empty(dir));
+}
+
+// ---- what counts as a failed video (docs/errors.md, "ffmpeg failures") ----------------------
+
+namespace {
+
+// An executable shell script standing in for ffmpeg (a wrapper, or ffmpeg on a full disk).
+std::string fakeFfmpeg(const fs::path& dir, const std::string& body) {
+    const fs::path script = dir / "fake-ffmpeg";
+    std::ofstream(script) << "#!/bin/sh\n" << body << "\n";
+    fs::permissions(script, fs::perms::owner_all);
+    return script.string();
+}
+
+void encodeFrames(const fs::path& file, const std::string& ffmpeg) {
+    VideoOptions options = videoOptions("30", "fast", "ffmpeg");
+    options.ffmpeg = ffmpeg;
+    VideoEncoder encoder(file, 64, 48, PixelFormat::Rgba8, options);
+    for (int f = 0; f < 10; ++f) encoder.write(pattern(64, 48, PixelFormat::Rgba8, f));
+    encoder.finish();
+}
+
+std::string box(const std::string& type, std::size_t payload) {
+    const std::size_t size = payload + 8;
+    std::string bytes = {static_cast<char>(size >> 24), static_cast<char>(size >> 16), static_cast<char>(size >> 8),
+                         static_cast<char>(size)};
+    return bytes + type + std::string(payload, 'x');
+}
+
+}  // namespace
+
+TEST(Video, CheckMp4FindsTruncatedAndIndexlessFiles) {
+    const fs::path dir = testDir();
+    auto check = [&](const std::string& bytes) {
+        std::ofstream(dir / "f.mp4", std::ios::binary) << bytes;
+        return checkMp4(dir / "f.mp4");
+    };
+    EXPECT_EQ(check(box("ftyp", 16) + box("moov", 40) + box("mdat", 100)), "");
+    EXPECT_NE(check("").find("empty"), std::string::npos);
+    EXPECT_NE(check(box("ftyp", 16) + box("free", 0) + box("mdat", 100)).find("no 'moov'"), std::string::npos);
+    const std::string truncated = box("ftyp", 16) + box("moov", 40) + box("mdat", 100);
+    EXPECT_NE(check(truncated.substr(0, truncated.size() - 10)).find("'mdat' runs past the end"), std::string::npos);
+    EXPECT_NE(check(box("ftyp", 16) + std::string("\0\0", 2)).find("truncated"), std::string::npos);
+    // A 64-bit size (size field 1) and a last box "to the end of the file" (size field 0).
+    std::string large = std::string("\0\0\0\1mdat", 8) + std::string("\0\0\0\0\0\0\0\x18", 8) + "12345678";
+    EXPECT_EQ(check(box("moov", 8) + large), "");
+    EXPECT_EQ(check(box("moov", 8) + std::string("\0\0\0\0mdat", 8) + "abc"), "");
+}
+
+// ffmpeg 5 on a full disk: exits 0, and its "Error writing trailer" can be lost. The file
+// check refuses the truncated video.
+TEST(Video, TruncatedVideoFromAQuietSuccessfulFfmpegIsRefused) {
+    const fs::path dir = testDir();
+    const std::string ffmpeg = fakeFfmpeg(dir, "cat > /dev/null\nfor last; do :; done\n"
+                                               "printf '\\000\\000\\003\\350mdat' > \"$last\"\nexit 0");
+    const fs::path out = dir / "out" / "x.mp4";
+    try {
+        encodeFrames(out, ffmpeg);
+        ADD_FAILURE() << "a truncated video was committed";
+    } catch (const EnvironmentError& e) {
+        EXPECT_NE(std::string(e.what()).find("not a complete MP4"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(out.string()), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(fs::is_empty(out.parent_path()));
+}
+
+// An error line fails the video even when ffmpeg exits 0.
+TEST(Video, ErrorLineFailsTheVideoDespiteExitZero) {
+    const fs::path dir = testDir();
+    const std::string ffmpeg = fakeFfmpeg(
+        dir, "ffmpeg \"$@\" || exit\necho '[out#0/mp4] Error writing trailer: No space left on device' >&2\nexit 0");
+    const fs::path out = dir / "out" / "x.mp4";
+    try {
+        encodeFrames(out, ffmpeg);
+        ADD_FAILURE() << "the video was committed";
+    } catch (const EnvironmentError& e) {
+        EXPECT_NE(std::string(e.what()).find("ffmpeg said:\n[out#0/mp4] Error writing trailer"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_TRUE(fs::is_empty(out.parent_path()));
+}
+
+// Text that is not an ffmpeg error (a wrapper's note, the dynamic loader's complaint) is
+// passed on as a warning; the video is written.
+TEST(Video, OtherStderrTextIsAWarning) {
+    const fs::path dir = testDir();
+    const std::string ffmpeg = fakeFfmpeg(
+        dir, "echo 'site wrapper: using /opt/ffmpeg' >&2\n"
+             "echo \"ERROR: ld.so: object 'libx.so' from LD_PRELOAD cannot be preloaded: ignored.\" >&2\n"
+             "exec ffmpeg \"$@\"");
+    const fs::path out = dir / "x.mp4";
+    testing::internal::CaptureStderr();
+    EXPECT_NO_THROW(encodeFrames(out, ffmpeg));
+    const std::string said = testing::internal::GetCapturedStderr();
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_NE(said.find("signstim: warning: ffmpeg (writing " + out.string() + "): site wrapper: using /opt/ffmpeg"),
+              std::string::npos)
+        << said;
+    EXPECT_NE(said.find("cannot be preloaded"), std::string::npos) << said;
+    EXPECT_FALSE(isFfmpegErrorLine("ERROR: ld.so: object 'libx.so' from LD_PRELOAD cannot be preloaded: ignored."));
+    EXPECT_TRUE(isFfmpegErrorLine("av_interleaved_write_frame(): No space left on device"));
+    EXPECT_TRUE(isFfmpegErrorLine("Conversion failed!"));
+}
+
+// ffmpeg runs in its own process group (Ctrl-C reaches signstim alone) with SIGPIPE at its
+// default even though the signstim command ignores it (an ignored signal survives exec).
+TEST(Video, FfmpegGetsItsOwnProcessGroupAndDefaultSigpipe) {
+    const fs::path dir = testDir();
+    const std::string ffmpeg = fakeFfmpeg(
+        dir, "ignored=$(sed -n 's/^SigIgn:[[:space:]]*//p' /proc/$$/status)\n"
+             "[ $(( 0x$ignored & 0x1000 )) -eq 0 ] || { echo 'Error: SIGPIPE is ignored' >&2; exit 1; }\n"
+             "[ \"$(cut -d' ' -f5 /proc/$$/stat)\" = \"$$\" ] || { echo 'Error: shares a process group' >&2; exit 1; }\n"
+             "exec ffmpeg \"$@\"");
+    struct sigaction ignore{}, previous{};
+    ignore.sa_handler = SIG_IGN;
+    sigemptyset(&ignore.sa_mask);
+    ::sigaction(SIGPIPE, &ignore, &previous);
+    try {
+        encodeFrames(dir / "x.mp4", ffmpeg);
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << e.what();
+    }
+    ::sigaction(SIGPIPE, &previous, nullptr);
+    EXPECT_TRUE(fs::exists(dir / "x.mp4"));
 }
