@@ -1,6 +1,7 @@
 // `signstim story`: a story file (docs/stories.md) checked, as a timeline, or rendered in one
 // of the four versions.
 #include "app/cli_values.hpp"
+#include "app/clip_output.hpp"
 #include "app/commands.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -97,24 +98,11 @@ VerbVersion requireVersion(const StoryOptions& o) {
 }
 
 void renderStory(const StoryOptions& o, const StoryWorld& world, VerbVersion version) {
-    const std::filesystem::path out(o.outPath);
-    const render::OutputKind kind = render::outputKind(out);
-    const ImageSize size = parseImageSize(o.size, "--size", {.even = kind == render::OutputKind::Video});
-    const render::FrameRate frameRate = render::parseFrameRate(o.fps);
-    if (kind == render::OutputKind::Folder) render::checkFrameFolder(out);
-    requireSampleCount(o.msaa, "--msaa");
+    const ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
     TimelineOptions timing;
     timing.rate = o.rate;
     const Signer signer(world.scenes);
     const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(world.story, version, world.sources(), timing));
-    render::Renderer renderer(signerRendererOptions(size.width, size.height, o.msaa, o.device));
-    checkOutputWritable(out);
-    const int handle = renderer.addScene(signer.avatar());
-    ClipRenderOptions options;
-    options.framesPerSecond = frameRate.value();
-    render::VideoOptions video;
-    video.frameRate = frameRate;
-    const bool still = kind == render::OutputKind::Image;
     // The still: the middle of the first verb (where the versions differ), else the middle.
     double stillSeconds = 0.5 * clip.durationSeconds();
     for (const TimelineSpan& span : clip.timeline().spans)
@@ -122,20 +110,10 @@ void renderStory(const StoryOptions& o, const StoryWorld& world, VerbVersion ver
             stillSeconds = 0.5 * (span.startSeconds + span.endSeconds);
             break;
         }
-    std::unique_ptr<render::FrameSink> target = still ? render::makeDiscardSink() : render::makeFrameSink(out, {}, video);
-    StillCapturingSink sink(*target, static_cast<std::uint64_t>(stillSeconds * options.framesPerSecond));
-    const std::uint64_t frames =
-        renderClips(renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink,
-                    [&](std::uint64_t done, std::uint64_t total) {
-                        if (!o.quiet && (done == total || done % 30 == 0))
-                            std::fprintf(stderr, "signstim: frame %llu/%llu\n", static_cast<unsigned long long>(done),
-                                         static_cast<unsigned long long>(total));
-                    });
-    sink.finish();
-    if (still) render::writeImage(sink.still(), out);
-    std::printf("%s: \"%s\" (%s), %llu frame%s, %.1f s\n", out.string().c_str(), world.story.title.c_str(),
-                toString(version).c_str(), static_cast<unsigned long long>(still ? 1 : frames),
-                still || frames == 1 ? "" : "s", clip.durationSeconds());
+    const std::uint64_t frames = renderClipToOutput(output, signer, clip, stillSeconds);
+    std::printf("%s: \"%s\" (%s), %llu frame%s, %.1f s\n", output.out.string().c_str(), world.story.title.c_str(),
+                toString(version).c_str(), static_cast<unsigned long long>(frames), frames == 1 ? "" : "s",
+                clip.durationSeconds());
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // the indicating verbs of SPEC §3 (Huenerfauth, Lu & Kacorri 2015).
 #include "signer/avatar_render.hpp"
 #include "app/cli_values.hpp"
+#include "app/clip_output.hpp"
 #include "app/commands.hpp"
 #include "signer/verb_render.hpp"
 #include "common/atomic_file.hpp"
@@ -84,41 +85,12 @@ void printSummary(const VerbPerformance& p) {
 
 // verb --out: the signer performs the verb (lead-in from rest, the verb, a hold).
 void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, const VerbPerformance& performance) {
-    const std::filesystem::path out(o.outPath);
-    // The output's kind is checked before anything is loaded or rendered.
-    const render::OutputKind kind = render::outputKind(out);
-    // H.264 in yuv420p needs even sides: refused here as the flag's mistake, before rendering.
-    const ImageSize size = parseImageSize(o.size, "--size", {.even = kind == render::OutputKind::Video});
-    const std::uint32_t width = size.width, height = size.height;
-    const render::FrameRate frameRate = render::parseFrameRate(o.fps);
-    if (kind == render::OutputKind::Folder) render::checkFrameFolder(out);
-    requireSampleCount(o.msaa, "--msaa");
+    const ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
     const Signer signer(scenesDir, o.avatarFile, o.boneMapFile.empty() ? BoneMapping{} : loadBoneMapping(o.boneMapFile));
     const VerbClip clip(signer.rig(), signer.shapes(), performance);
-    // The renderer first: a device that refuses --msaa, --size or --device stops the command
-    // before anything is created on disk; then the output's place, before any frame.
-    render::Renderer renderer(signerRendererOptions(width, height, o.msaa, o.device));
-    checkOutputWritable(out);
-    const int handle = renderer.addScene(signer.avatar());
-    ClipRenderOptions options;
-    options.framesPerSecond = frameRate.value();
-    render::VideoOptions video;
-    video.frameRate = frameRate;
-    const bool still = kind == render::OutputKind::Image;
-    std::unique_ptr<render::FrameSink> target = still ? render::makeDiscardSink() : render::makeFrameSink(out, {}, video);
-    StillCapturingSink sink(*target, static_cast<std::uint64_t>(clip.middleOfVerbSeconds() * options.framesPerSecond));
-    const std::uint64_t frames =
-        renderClips(renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink,
-                    [&](std::uint64_t done, std::uint64_t total) {
-                        if (!o.quiet && (done == total || done % 10 == 0))
-                            std::fprintf(stderr, "signstim: frame %llu/%llu\n", static_cast<unsigned long long>(done),
-                                         static_cast<unsigned long long>(total));
-                    });
-    sink.finish();
-    if (still) render::writeImage(sink.still(), out);
-    std::printf("%s: %s %s, %llu frame%s\n", out.string().c_str(), performance.verb.c_str(),
-                toString(performance.version).c_str(), static_cast<unsigned long long>(still ? 1 : frames),
-                still || frames == 1 ? "" : "s");
+    const std::uint64_t frames = renderClipToOutput(output, signer, clip, clip.middleOfVerbSeconds());
+    std::printf("%s: %s %s, %llu frame%s\n", output.out.string().c_str(), performance.verb.c_str(),
+                toString(performance.version).c_str(), static_cast<unsigned long long>(frames), frames == 1 ? "" : "s");
 }
 
 }  // namespace
