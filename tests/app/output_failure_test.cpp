@@ -237,6 +237,21 @@ TEST(FullDisk, PngIsAnErrorNamingTheFileAndLeavesNothing) {
     EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
 }
 
+// Stories write through the same path (app/clip_output): a full disk is exit 3 there too.
+TEST(FullDisk, StoryStillIsAnErrorNamingTheFileAndLeavesNothing) {
+    const fs::path dir = testDir();
+    SmallDisk disk(dir, "40k");
+    MOUNT_OR_SKIP(disk);
+    const fs::path out = dir / "story.png";
+    const CommandResult r = runSignstim("story " +
+                                        shellQuote(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/stories/examples/the-question.json") +
+                                        " --version point --size 1280x720 --fps 2 --msaa 1 --quiet --out " + shellQuote(out.string()));
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find(out.string() + ": cannot write: No space left on device"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
+}
+
 TEST(FullDisk, FrameFolderIsAnErrorAndLeavesTheEarlierRenderIntact) {
     const fs::path dir = testDir();
     SmallDisk disk(dir, "40k");
@@ -510,6 +525,14 @@ TEST(Interrupt, SigtermDuringMp4RemovesTemporariesAndEndsFfmpeg) {
     const fs::path out = dir / "ask.mp4";
     interruptAndCheck({"verb", "ASK", "--subject", "0.9", "--object", "-0.6", "--version", "point", "--size",
                        "160x120", "--fps", "1000", "--quiet", "--out", out.string()},
+                      dir, out, SIGTERM, true);
+}
+
+TEST(Interrupt, SigtermDuringAStoryMp4RemovesTemporariesAndEndsFfmpeg) {
+    const fs::path dir = testDir();
+    const fs::path out = dir / "story.mp4";
+    interruptAndCheck({"story", std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/stories/examples/the-question.json",
+                       "--version", "animator", "--size", "160x120", "--fps", "300", "--quiet", "--out", out.string()},
                       dir, out, SIGTERM, true);
 }
 
