@@ -225,31 +225,28 @@ void interruptAndCheck(const std::vector<std::string>& arguments, const fs::path
 
 // ---- 1. full disk --------------------------------------------------------------------------
 
-TEST(FullDisk, PngIsAnErrorNamingTheFileAndLeavesNothing) {
+// `arguments` writes the still `name` (larger than 40 kB) onto a 40 kB disk: exit 3 naming it.
+void stillOntoAFullDisk(const std::string& arguments, const std::string& name) {
     const fs::path dir = testDir();
     SmallDisk disk(dir, "40k");
     MOUNT_OR_SKIP(disk);
-    const fs::path out = dir / "pose.png";  // a 1280x720 PNG is larger than 40 kB
-    const CommandResult r = runSignstim("pose --right A --size 1280x720 --out " + shellQuote(out.string()));
+    const fs::path out = dir / name;
+    const CommandResult r = runSignstim(arguments + " --out " + shellQuote(out.string()));
     EXPECT_EQ(r.status, 3) << r.output;
     EXPECT_NE(r.output.find(out.string() + ": cannot write: No space left on device"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(out));
     EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
 }
 
+TEST(FullDisk, PngIsAnErrorNamingTheFileAndLeavesNothing) {
+    stillOntoAFullDisk("pose --right A --size 1280x720", "pose.png");
+}
+
 // Stories write through the same path (app/clip_output): a full disk is exit 3 there too.
 TEST(FullDisk, StoryStillIsAnErrorNamingTheFileAndLeavesNothing) {
-    const fs::path dir = testDir();
-    SmallDisk disk(dir, "40k");
-    MOUNT_OR_SKIP(disk);
-    const fs::path out = dir / "story.png";
-    const CommandResult r = runSignstim("story " +
-                                        shellQuote(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/stories/examples/the-question.json") +
-                                        " --version point --size 1280x720 --fps 2 --msaa 1 --quiet --out " + shellQuote(out.string()));
-    EXPECT_EQ(r.status, 3) << r.output;
-    EXPECT_NE(r.output.find(out.string() + ": cannot write: No space left on device"), std::string::npos) << r.output;
-    EXPECT_FALSE(fs::exists(out));
-    EXPECT_TRUE(temporariesIn(dir).empty()) << joined(temporariesIn(dir));
+    stillOntoAFullDisk("story " + shellQuote(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/stories/examples/the-question.json") +
+                           " --version point --size 1280x720 --fps 2 --msaa 1 --quiet",
+                       "story.png");
 }
 
 TEST(FullDisk, FrameFolderIsAnErrorAndLeavesTheEarlierRenderIntact) {
