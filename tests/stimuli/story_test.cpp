@@ -251,3 +251,43 @@ TEST(DefaultStories, TwelveStoriesUseEveryVerbInAtLeastThreeWithFourQuestionsEac
 
 }  // namespace
 }  // namespace signstim::stimuli
+
+#include "stimuli/timeline.hpp"
+#include "stimuli/verb_models.hpp"
+
+namespace signstim::stimuli {
+namespace {
+
+// What `signstim story FILE --check` asks of each default story: its timeline builds in all
+// four versions (every sign in the lexicon, every letter with a handshape, a trained model
+// and an animator file for every verb instance), with the verb slots as long in each.
+TEST(DefaultStories, EveryStoryBuildsInAllFourVersionsWithEqualSlots) {
+    const std::string scenes = std::string(SIGNSTIM_SOURCE_DIR) + "/scenes";
+    const hand::HandModel model = hand::buildHandModel();
+    const HandshapeLibrary shapes = loadHandshapes(scenes + "/handshapes.json", model);
+    const Lexicon lexicon = loadLexicon(scenes + "/lexicon", shapes, model);
+    const TrainedVerbModels models = loadVerbModels(scenes + "/models/verb_models.json", verbs());
+    StoryVocabulary vocabulary;
+    vocabulary.verbs = &verbs();
+    vocabulary.signs = lexicon.glosses();
+    TimelineSources sources;
+    sources.lexicon = &lexicon;
+    sources.shapes = &shapes;
+    sources.verbs = [&](const std::string& verb, VerbVersion version, double subject, double object, int, int) {
+        return synthesizeVerb(VerbSources{&verbs(), &models, scenes + "/animator", &shapes}, verb, version, subject, object);
+    };
+    for (int n = 1; n <= 12; ++n) {
+        char name[64];
+        std::snprintf(name, sizeof name, "/stories/story-%02d.json", n);
+        const Story story = loadStory(scenes + name, vocabulary);
+        std::vector<double> durations;
+        for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected})
+            durations.push_back(buildTimeline(story, v, sources).durationSeconds);
+        for (double d : durations) EXPECT_EQ(d, durations.front()) << name;
+        EXPECT_GT(durations.front(), 10.0) << name;
+        EXPECT_LT(durations.front(), 60.0) << name;
+    }
+}
+
+}  // namespace
+}  // namespace signstim::stimuli
