@@ -35,6 +35,9 @@ TEST_F(HandshapeLibraryTest, HasEveryStaticLetterAndTheVerbHandshapes) {
     for (const char* name : {"1", "X", "B", "bent-B", "C", "flat-O", "O", "5"}) {
         EXPECT_NE(library.find(name), nullptr) << name;
     }
+    for (const char* name : {"2", "3", "4", "6", "7", "8", "9", "10", "claw-5", "open-8", "ILY"}) {
+        EXPECT_NE(library.find(name), nullptr) << name;
+    }
     EXPECT_EQ(library.find("J"), nullptr);
     EXPECT_EQ(library.find("Z"), nullptr);
     EXPECT_THROW(library.at("Z"), InputError);
@@ -44,17 +47,23 @@ TEST_F(HandshapeLibraryTest, ShapesCarryAslLexLabelsWhereOneExists) {
     for (const Handshape& shape : library.shapes) {
         if (shape.name == "P" || shape.name == "Q") {
             EXPECT_TRUE(shape.aslLexLabel.empty()) << shape.name << " has no handshape of its own";
+        } else if (shape.name == "10") {
+            // The thumb-up fist: ASL-LEX 2.0's handshape list has no value of its own for it, and
+            // which one it is coded under (probably a) is not known here.
+            EXPECT_TRUE(shape.aslLexLabel.empty()) << shape.name;
         } else {
             EXPECT_FALSE(shape.aslLexLabel.empty()) << shape.name;
         }
     }
     EXPECT_EQ(library.at("bent-B").aslLexLabel, "bent_B");
     EXPECT_EQ(library.at("flat-O").aslLexLabel, "flat_O");
+    EXPECT_EQ(library.at("open-8").aslLexLabel, "open_8");
 }
 
 TEST_F(HandshapeLibraryTest, ThumbTipTouchesTheNamedFingertip) {
     const std::pair<const char*, Digit> expected[] = {
-        {"O", Digit::Index}, {"F", Digit::Index}, {"D", Digit::Middle}, {"flat-O", Digit::Index}, {"T", Digit::Index}};
+        {"O", Digit::Index}, {"F", Digit::Index}, {"D", Digit::Middle}, {"flat-O", Digit::Index}, {"T", Digit::Index},
+        {"6", Digit::Little}, {"7", Digit::Ring}, {"8", Digit::Middle}, {"9", Digit::Index}};
     for (const auto& [name, digit] : expected) {
         const Handshape& shape = library.at(name);
         ASSERT_TRUE(shape.thumbContact.has_value()) << name;
@@ -73,7 +82,7 @@ TEST_F(HandshapeLibraryTest, ThumbTipTouchesTheNamedFingertip) {
             ++checked;
         }
     }
-    EXPECT_GE(checked, 10);
+    EXPECT_GE(checked, 18);
 }
 
 TEST_F(HandshapeLibraryTest, NoTwoDigitsInterpenetrateInAnyShape) {
