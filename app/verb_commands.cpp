@@ -1,15 +1,11 @@
 // `signstim train`, `signstim verb`, `signstim evaluate`, `signstim reference-corpus`:
 // the indicating verbs of SPEC §3 (Huenerfauth, Lu & Kacorri 2015).
-#include "signer/avatar_render.hpp"
 #include "app/cli_values.hpp"
 #include "app/clip_output.hpp"
 #include "app/commands.hpp"
 #include "signer/verb_render.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
-#include "renderer/frame_sink.hpp"
-#include "renderer/image_io.hpp"
-#include "renderer/renderer.hpp"
 #include "stimuli/corpus.hpp"
 #include "stimuli/evaluation.hpp"
 #include "stimuli/reference_performer.hpp"
