@@ -71,7 +71,7 @@ public:
         if (!sources_.lexicon || !sources_.shapes || !sources_.verbs)
             throw std::invalid_argument("buildTimeline: lexicon, handshapes and verbs are required");
         if (!(options_.rate > 0.1 && options_.rate <= 4.0))
-            throw InputError("<timing>", 0, "rate", "signing rate must be within 0.1 to 4");
+            throw std::invalid_argument("buildTimeline: rate outside 0.1 to 4 (the command line checks --rate)");
         if (std::find(sources_.slotVersions.begin(), sources_.slotVersions.end(), version) == sources_.slotVersions.end())
             throw std::invalid_argument("buildTimeline: the version is not among the slot versions");
     }
