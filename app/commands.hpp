@@ -18,5 +18,6 @@ void registerVerbCommands(Commands& commands);    // train, verb, evaluate
 void registerAvatarCommands(Commands& commands);  // avatar build, handshapes, pose
 void registerDemoCommand(Commands& commands);     // demo (the main job until the study exists)
 void registerStoryCommands(Commands& commands);   // story (check, timeline, render)
+void registerStudyCommands(Commands& commands);   // study (render, check, verify, merge), bench study
 
 }  // namespace signstim::app

@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
     app::registerAvatarCommands(commands);
     app::registerVerbCommands(commands);
     app::registerStoryCommands(commands);
+    app::registerStudyCommands(commands);
     app::requirePlainNumbers(root);
 
     try {

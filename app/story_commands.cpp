@@ -3,6 +3,7 @@
 #include "app/cli_values.hpp"
 #include "app/clip_output.hpp"
 #include "app/commands.hpp"
+#include "app/story_world.hpp"
 #include "common/error.hpp"
 #include "signer/timeline_clip.hpp"
 #include "stimuli/lexicon.hpp"
@@ -39,52 +40,6 @@ struct StoryOptions {
     bool quiet = false;
 };
 
-// Everything a story is checked against and built from, loaded once.
-struct StoryWorld {
-    std::filesystem::path scenes;
-    hand::HandModel handModel = hand::buildHandModel();
-    HandshapeLibrary shapes;
-    VerbLibrary verbs;
-    TrainedVerbModels models;
-    Lexicon lexicon;
-    Story story;
-
-    explicit StoryWorld(const StoryOptions& o) : scenes(resolveScenesDir(o.scenesDir)) {
-        shapes = loadHandshapes(scenes / "handshapes.json", handModel);
-        verbs = loadVerbLibrary(scenes / "verbs.json");
-        models = loadVerbModels(scenes / "models" / "verb_models.json", verbs);
-        lexicon = loadLexicon(o.lexiconFile.empty() ? scenes / "lexicon" : std::filesystem::path(o.lexiconFile), shapes,
-                              handModel);
-        StoryVocabulary vocabulary;
-        vocabulary.verbs = &verbs;
-        vocabulary.signs = lexicon.glosses();
-        // J and Z are a handshape (I, 1) plus a path; the other letters are their handshape.
-        vocabulary.canFingerspell = [this](char letter) {
-            const std::string shape = letter == 'J' ? "I" : letter == 'Z' ? "1" : std::string(1, letter);
-            return shapes.find(shape) != nullptr;
-        };
-        story = loadStory(o.file, vocabulary);
-    }
-
-    TimelineSources sources() const {
-        TimelineSources s;
-        s.lexicon = &lexicon;
-        s.shapes = &shapes;
-        s.verbs = [this](const std::string& verb, VerbVersion version, double subject, double object, int line,
-                         int column) {
-            try {
-                return synthesizeVerb(VerbSources{&verbs, &models, scenes / "animator", &shapes}, verb, version, subject,
-                                      object);
-            } catch (const InputError& e) {
-                // Say which sentence needs it (a missing animator file, most often).
-                if (e.isCommandLine()) throw InputError(story.file, line, column, "", e.detail());
-                throw InputError(story.file, line, column, "", std::string(e.what()));
-            }
-        };
-        return s;
-    }
-};
-
 VerbVersion requireVersion(const StoryOptions& o) {
     if (o.version.empty()) throw commandLineError("--version", "give the version: point, vector, animator or uninflected");
     const std::optional<VerbVersion> v = parseVerbVersion(o.version);
@@ -92,12 +47,12 @@ VerbVersion requireVersion(const StoryOptions& o) {
     return *v;
 }
 
-void renderStory(const StoryOptions& o, const StoryWorld& world, VerbVersion version) {
+void renderStory(const StoryOptions& o, const StoryWorld& world, const Story& story, VerbVersion version) {
     const ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
     TimelineOptions timing;
     timing.rate = o.rate;
     const Signer signer(world.scenes);
-    const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(world.story, version, world.sources(), timing));
+    const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(story, version, world.sources(story), timing));
     // The still: the middle of the first verb (where the versions differ), else the middle.
     double stillSeconds = 0.5 * clip.durationSeconds();
     for (const TimelineSpan& span : clip.timeline().spans)
@@ -106,7 +61,7 @@ void renderStory(const StoryOptions& o, const StoryWorld& world, VerbVersion ver
             break;
         }
     const std::uint64_t frames = renderClipToOutput(output, signer, clip, stillSeconds);
-    std::printf("%s: \"%s\" (%s), %llu frame%s, %.1f s\n", output.out.string().c_str(), world.story.title.c_str(),
+    std::printf("%s: \"%s\" (%s), %llu frame%s, %.1f s\n", output.out.string().c_str(), story.title.c_str(),
                 toString(version).c_str(), static_cast<unsigned long long>(frames), frames == 1 ? "" : "s",
                 clip.durationSeconds());
 }
@@ -148,28 +103,29 @@ void registerStoryCommands(Commands& commands) {
             throw commandLineError("--out", "say what to do: --check, --json or --out FILE");
         std::optional<VerbVersion> version;
         if (!o->check) version = requireVersion(*o);
-        const StoryWorld world(*o);
+        const StoryWorld world(o->scenesDir, o->lexiconFile);
+        const Story story = world.loadStory(o->file);
         TimelineOptions timing;
         timing.rate = o->rate;
         if (o->check) {
             double seconds = 0.0;
             int verbs = 0;
             for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
-                const Timeline t = buildTimeline(world.story, v, world.sources(), timing);
+                const Timeline t = buildTimeline(story, v, world.sources(story), timing);
                 seconds = t.durationSeconds;
                 verbs = 0;
                 for (const TimelineSpan& span : t.spans) verbs += span.kind == SpanKind::Verb;
             }
             std::printf("%s: ok: \"%s\", %zu characters, %zu sentences, %d verbs, %zu questions, %.1f s in every version\n",
-                        o->file.c_str(), world.story.title.c_str(), world.story.characters.size(),
-                        world.story.sentences.size(), verbs, world.story.questions.size(), seconds);
+                        o->file.c_str(), story.title.c_str(), story.characters.size(),
+                        story.sentences.size(), verbs, story.questions.size(), seconds);
             return;
         }
         if (o->json) {
-            std::fputs(formatTimelineJson(buildTimeline(world.story, *version, world.sources(), timing)).c_str(), stdout);
+            std::fputs(formatTimelineJson(buildTimeline(story, *version, world.sources(story), timing)).c_str(), stdout);
             return;
         }
-        renderStory(*o, world, *version);
+        renderStory(*o, world, story, *version);
     });
 }
 

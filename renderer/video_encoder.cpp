@@ -240,8 +240,14 @@ VideoEncoder::VideoEncoder(fs::path output, std::uint32_t width, std::uint32_t h
         "-vf", "scale=out_color_matrix=bt709:out_range=tv,format=yuv420p",
         "-c:v", "libx264", "-preset", options.preset, "-crf", std::to_string(options.crf),
         "-pix_fmt", "yuv420p", "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709",
-        "-color_range", "tv", "-fps_mode", "cfr", "-r", rate, "-movflags", "+faststart",
-        "-f", "mp4", temporary_->path().string()};
+        "-color_range", "tv", "-fps_mode", "cfr", "-r", rate, "-movflags", "+faststart"};
+    if (options.threads > 0) {
+        // One encoder thread count for every machine: x264's output depends on it.
+        args.insert(args.end(), {"-threads", std::to_string(options.threads)});
+        // ffmpeg's own filter threads do not change the bytes, but keep to the budget.
+        args.insert(args.end(), {"-filter_threads", "1"});
+    }
+    args.insert(args.end(), {"-f", "mp4", temporary_->path().string()});
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);

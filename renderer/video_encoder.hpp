@@ -43,6 +43,10 @@ struct VideoOptions {
     // a positive value so that, where rendering runs on the same CPUs (lavapipe), the
     // encoder takes the cores' idle time rather than preempting the renderer.
     int niceness = 0;
+    // x264 threads; 0: ffmpeg's choice (from the machine's cores). x264's bytes depend on
+    // its thread count, so outputs that must be identical on every machine (a study) fix it;
+    // their parallelism comes from several encoders at once instead.
+    int threads = 0;
 };
 
 // Empty when `file` is a complete MP4 at its top level: its boxes ([4-byte big-endian size]

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <deque>
 
 namespace signstim::signer {
 namespace {
@@ -154,6 +156,94 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
     }
     while (retrieved < submitted) retrieveOne();
     return total;
+}
+
+namespace {
+
+bool samePose(const render::Pose& a, const render::Pose& b) {
+    if (a.local.size() != b.local.size() || a.useRestMatrix != b.useRestMatrix) return false;
+    for (std::size_t i = 0; i < a.local.size(); ++i) {
+        const render::Trs& x = a.local[i];
+        const render::Trs& y = b.local[i];
+        if (x.translation != y.translation || x.rotation != y.rotation || x.scale != y.scale) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+SharedRenderStats renderClipsSharingFrames(render::Renderer& renderer, int sceneHandle, const render::Scene& avatar,
+                                           const SignerRig& rig, const std::vector<const Clip*>& clips,
+                                           double framesPerSecond, const std::vector<render::FrameSink*>& sinks,
+                                           const std::function<void(std::uint64_t, std::uint64_t)>& progress) {
+    SharedRenderStats stats;
+    if (clips.empty()) return stats;
+    if (sinks.size() != clips.size()) throw std::invalid_argument("renderClipsSharingFrames: one sink per clip");
+    double duration = 0.0;
+    for (const Clip* clip : clips) duration = std::max(duration, clip->durationSeconds());
+    const std::uint64_t total = static_cast<std::uint64_t>(std::floor(duration * framesPerSecond + 1e-9)) + 1;
+    stats.frames = total;
+
+    const render::RendererOptions& ro = renderer.options();
+    const float aspect = static_cast<float>(ro.width) / static_cast<float>(ro.height);
+    const render::Camera camera = postureFrame(avatar, rig, sceneHandle, SignerPosture{}, aspect).views.front().camera;
+
+    std::vector<PoseReport> previous(clips.size());
+    std::vector<bool> hasPrevious(clips.size(), false);
+    const std::uint32_t inFlight = std::max(1u, renderer.framesInFlight());
+    // Which sink each submitted image goes to, in submission order: -1 for every sink.
+    std::deque<int> targets;
+    std::uint64_t framesDone = 0;
+    const auto retrieveOne = [&] {
+        render::Image image;
+        renderer.retrieve(image);
+        const int target = targets.front();
+        targets.pop_front();
+        if (target >= 0) {
+            sinks[static_cast<std::size_t>(target)]->push(std::move(image));
+        } else {
+            for (std::size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->push(render::Image(image));
+            sinks.back()->push(std::move(image));
+        }
+        // A frame is done when its last image (the shared one, or the last clip's) is out.
+        if (target < 0 || target + 1 == static_cast<int>(sinks.size())) {
+            ++framesDone;
+            if (progress) progress(framesDone, total);
+        }
+    };
+    const auto submit = [&](render::Pose&& pose, int target) {
+        render::Frame frame;
+        render::View view;
+        view.scene = sceneHandle;
+        view.pose = std::move(pose);
+        view.camera = camera;
+        frame.views.push_back(std::move(view));
+        if (targets.size() >= inFlight) retrieveOne();
+        renderer.submit(frame);
+        targets.push_back(target);
+        ++stats.renderedImages;
+    };
+    std::vector<render::Pose> poses(clips.size());
+    for (std::uint64_t f = 0; f < total; ++f) {
+        const double t = static_cast<double>(f) / framesPerSecond;
+        bool shared = true;
+        for (std::size_t i = 0; i < clips.size(); ++i) {
+            if (f > 0 && clips[i]->solveAfresh(static_cast<double>(f - 1) / framesPerSecond, t)) hasPrevious[i] = false;
+            PoseReport report;
+            poses[i] = rig.pose(clips[i]->postureAt(t), &report, hasPrevious[i] ? &previous[i] : nullptr);
+            previous[i] = report;
+            hasPrevious[i] = true;
+            shared = shared && (i == 0 || samePose(poses[i], poses[0]));
+        }
+        if (shared) {
+            ++stats.sharedFrames;
+            submit(std::move(poses[0]), -1);
+        } else {
+            for (std::size_t i = 0; i < clips.size(); ++i) submit(std::move(poses[i]), static_cast<int>(i));
+        }
+    }
+    while (!targets.empty()) retrieveOne();
+    return stats;
 }
 
 }  // namespace signstim::signer

@@ -120,7 +120,9 @@ public:
         if (root.contains("notes")) story_.notes = requiredString(root, "notes", "", {});
         readCharacters(required(root, "characters", "", {}));
         readSentences(required(root, "sentences", "", {}));
-        readQuestions(required(root, "questions", "", {}));
+        // A story for phase 1 has questions (the study requires them); the sentences of phase 2
+        // are a story without any.
+        if (root.contains("questions")) readQuestions(root["questions"]);
         return std::move(story_);
     }
 
@@ -478,7 +480,7 @@ private:
     // ---- questions -------------------------------------------------------------------------
 
     void readQuestions(const json& list) {
-        if (!list.is_array() || list.empty())
+        if (!list.is_array())
             fail(lineOfKey({}, "questions"), "/questions", "expected a list of multiple-choice questions");
         for (std::size_t i = 0; i < list.size(); ++i) {
             const json& entry = list[i];

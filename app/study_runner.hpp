@@ -1,0 +1,70 @@
+#pragma once
+// `signstim study`: a study file (docs/study.md) -> every stimulus clip, every participant's
+// schedule and exports, a manifest and a review page, in one output folder.
+//
+// Work units, sorted by name: one per phase-1 story (its V versions rendered together, the
+// frames outside the verbs drawn once for all of them) and one per phase-2 sentence (the V
+// versions side by side in one clip). A unit is complete when its record
+// (.signstim/units/<unit>.json: the hash of its inputs and each file's SHA-256) exists and
+// its files are there; a re-run skips complete units whose inputs are unchanged. --shard i/N
+// takes units i, i+N, i+2N, ... of the sorted list. When every unit is complete, the exports,
+// the review page and manifest.json are written (by the run that completes the set, or by
+// `study merge`).
+#include "stimuli/study_listing.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace signstim::app {
+
+struct StudyRunOptions {
+    std::filesystem::path studyFile;  // empty: SCENES/studies/default.json
+    std::filesystem::path out;
+    bool quick = false;               // the study's "quick" render settings
+    unsigned jobs = 0;                // encoders at once; 0: the machine's cores
+    std::size_t shardIndex = 0, shardCount = 1;
+    bool pngFrames = false;           // also PNG frames (or the study file's outputs.pngFrames)
+    bool shareFrames = true;          // false: every version drawn in full (the naive cost, for bench)
+    std::string device;
+    std::string scenesDir;
+    std::string lexicon;
+    bool quiet = false;
+};
+
+struct StudyRunReport {
+    std::size_t units = 0, unitsInShard = 0, rendered = 0, skipped = 0;
+    std::uint64_t clipFrames = 0;      // frames written to clips by this run
+    std::uint64_t renderedImages = 0;  // images drawn by this run
+    std::uint64_t sharedFrames = 0;    // story frames drawn once for all versions
+    double timelineSeconds = 0.0, renderSeconds = 0.0, encodeWaitSeconds = 0.0, writeSeconds = 0.0;
+    double totalSeconds = 0.0;
+    bool complete = false;             // every unit of the study is there (exports and manifest written)
+    std::vector<std::string> missing;  // units not complete yet (other shards)
+};
+
+// Reads and checks the study file, its stories and phase-2 sentences, builds every timeline
+// in every version (as the render would), and prints a summary. Throws InputError (exit 2).
+void checkStudy(const StudyRunOptions& options);
+
+StudyRunReport runStudy(const StudyRunOptions& options);
+
+// Every file of DIR's manifest present with its size and SHA-256, every unit of the plan
+// listed. Returns the problems (empty: verified); throws InputError when DIR has no manifest.
+std::vector<std::string> verifyStudyFolder(const std::filesystem::path& dir, bool quiet);
+
+// Copies the units of `sources` missing from `target` (which may be one of them), checking
+// each file's SHA-256 against its record, then writes the exports, review page and manifest.
+// Throws InputError when the folders hold different studies or units are missing.
+StudyRunReport mergeStudyFolders(const std::vector<std::filesystem::path>& sources,
+                                 const std::filesystem::path& target, bool quiet);
+
+// "2/8" -> {2, 8}: shard I of N, 0-based (I = SLURM_ARRAY_TASK_ID of `sbatch --array=0-(N-1)`).
+// Throws InputError naming --shard (exit 1).
+std::pair<std::size_t, std::size_t> parseShard(const std::string& text);
+// The shard from SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN of SLURM_ARRAY_TASK_COUNT, when
+// set (an array declared 1-N works too); {0, 1} otherwise.
+std::pair<std::size_t, std::size_t> shardFromEnvironment();
+
+}  // namespace signstim::app
