@@ -63,10 +63,18 @@ std::uint64_t renderClipToOutput(const ClipOutput& output, const signer::Signer&
                          100.0 * static_cast<double>(done) / static_cast<double>(total), left,
                          terminal && done != total ? "" : "\n");
         });
+    failOnValidationMessages(renderer);
     sink.finish();
     if (!still) return frames;
     render::writeImage(sink.still(), output.out);
     return 1;
+}
+
+void failOnValidationMessages(const render::Renderer& renderer) {
+    const std::vector<std::string> messages = renderer.validationMessages();
+    if (messages.empty()) return;
+    for (const std::string& m : messages) std::fprintf(stderr, "signstim: validation: %s\n", m.c_str());
+    throw std::runtime_error(std::to_string(messages.size()) + " Vulkan validation message(s); output not written");
 }
 
 }  // namespace signstim::app

@@ -9,6 +9,7 @@
 #include "app/cli_values.hpp"
 #include "renderer/frame_sink.hpp"
 #include "renderer/video_encoder.hpp"
+#include "renderer/renderer.hpp"
 #include "signer/verb_render.hpp"
 
 #include <cstdint>
@@ -35,5 +36,9 @@ ClipOutput checkClipOutput(const std::string& out, const std::string& size, cons
 // `stillSeconds`. Returns the number of frames written (1 for a still).
 std::uint64_t renderClipToOutput(const ClipOutput& output, const signer::Signer& signer, const signer::Clip& clip,
                                  double stillSeconds);
+
+// With validation on (SIGNSTIM_VALIDATION=1), any message of the layer fails the command
+// before its output is committed: each is printed, then std::runtime_error (exit 4).
+void failOnValidationMessages(const render::Renderer& renderer);
 
 }  // namespace signstim::app

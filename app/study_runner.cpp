@@ -1,6 +1,7 @@
 #include "app/study_runner.hpp"
 
 #include "app/cli_values.hpp"
+#include "app/clip_output.hpp"
 #include "app/story_world.hpp"
 #include "app/study_documents.hpp"
 #include "common/atomic_file.hpp"
@@ -493,6 +494,7 @@ public:
             job->frames = n;
         }
         report.renderSeconds += secondsSince(start);
+        failOnValidationMessages(renderer_);
 
         // Finish on a worker: encoders drain while the next unit renders.
         const fs::path dir = dir_;

@@ -1,0 +1,232 @@
+// `signstim study` as an experimenter (and a lab's CI, and Slurm) runs it: the default study
+// checks; bad study files are refused naming file, line and field; a small study renders
+// under the validation layer into playable MP4s, posters, exports and a manifest; a re-run
+// skips everything; verify catches a changed byte; shards merged equal one run byte for byte;
+// an interrupted run leaves no broken file and resumes to the same bytes.
+#include "tests/app/run_command.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using signstim::test::Capture;
+using signstim::test::runShell;
+using signstim::test::runSignstim;
+using signstim::test::shellQuote;
+
+const std::string kScenes = fs::path(SIGNSTIM_SOURCE_DIR).append("scenes").string();
+const std::string kSmall = fs::path(SIGNSTIM_SOURCE_DIR).append("tests/app/data/small-study.json").string();
+
+fs::path freshDir(const std::string& name) {
+    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "study_cli_test" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir.parent_path());
+    return dir;
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string study(const std::string& arguments) { return "study " + arguments + " --scenes " + shellQuote(kScenes); }
+
+// One uninterrupted run of the small study (its "render" settings), shared by the tests that
+// compare other runs against it.
+const fs::path& referenceRun() {
+    static const fs::path dir = [] {
+        const fs::path d = freshDir("reference");
+        const auto r = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(d.string())),
+                                   Capture::StdoutAndStderr, "SIGNSTIM_VALIDATION=1");
+        EXPECT_EQ(r.status, 0) << r.output;
+        EXPECT_NE(r.output.find("study complete"), std::string::npos) << r.output;
+        return d;
+    }();
+    return dir;
+}
+
+TEST(StudyCli, DefaultStudyChecksWithTheDesignOfThePaper) {
+    const auto r = runSignstim(study("--check"));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("12 stories x 4 versions, 24 participants in 4 groups"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("each version 3 times"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("8 side-by-side sentences"), std::string::npos) << r.output;
+}
+
+TEST(StudyCli, BadStudyFilesAreRefusedNamingFileLineAndField) {
+    const fs::path dir = freshDir("bad");
+    fs::create_directories(dir);
+    const std::string good = readFile(kSmall);
+    struct Case {
+        std::string from, to, expect;
+    };
+    const std::vector<Case> cases = {
+        // 3 stories over 4 versions: the design says why and what would work.
+        {"    \"../../../scenes/stories/story-04.json\"\n", "", "use a multiple of 4 stories such as 4"},
+        {"\"vector\",", "\"vectr\",", "/versions/1"},
+        {"story-02.json", "story-99.json", "bad.json:10: field '/stories/1'"},
+        {"\"96x72\"", "\"95x72\"", "/render/size"},
+        {"\"participants\": 4", "\"participants\": 0", "/participants"},
+        {"\"seed\": 7", "\"seed\": 7, \"sead\": 8", "unknown field 'sead'"},
+        {"[1, 4, 6, 8]", "[1, 4, 6, 9]", "sentence 9 does not exist"},
+        {"[1, 4, 6, 8]", "[1, 4, 6]", "3 side-by-side sentences cannot put every version in every panel equally often"},
+    };
+    for (const Case& c : cases) {
+        std::string text = good;
+        const std::size_t at = text.find(c.from);
+        ASSERT_NE(at, std::string::npos) << c.from;
+        text.replace(at, c.from.size(), c.to);
+        if (c.from.find("story-04") != std::string::npos) text.replace(text.find("story-03.json\","), 15, "story-03.json\"");
+        // The bad file lives in the build tree: its story paths made absolute.
+        for (std::size_t p = text.find("../../../scenes/"); p != std::string::npos; p = text.find("../../../scenes/"))
+            text.replace(p, 16, kScenes + "/");
+        const fs::path bad = dir / "bad.json";
+        std::ofstream(bad) << text;
+        const auto r = runSignstim(study(shellQuote(bad.string()) + " --check"));
+        EXPECT_EQ(r.status, 2) << c.to << "\n" << r.output;
+        EXPECT_NE(r.output.find("bad.json:"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(c.expect), std::string::npos) << "expected '" << c.expect << "' in:\n" << r.output;
+    }
+    // A command-line mistake is exit 1.
+    EXPECT_EQ(runSignstim(study(shellQuote(kSmall) + " --out x --shard 3/3")).status, 1);
+    EXPECT_EQ(runSignstim(study(shellQuote(kSmall))).status, 1);
+}
+
+TEST(StudyCli, RendersPlayableClipsResumesAndVerifyCatchesAChangedByte) {
+    const fs::path& dir = referenceRun();
+    const nlohmann::json manifest = nlohmann::json::parse(readFile(dir / "manifest.json"));
+    EXPECT_EQ(manifest["seed"], 7);
+    EXPECT_EQ(manifest["units"].size(), 8u);
+    std::set<std::string> kinds;
+    int videos = 0;
+    for (const auto& f : manifest["files"]) {
+        kinds.insert(f["kind"].get<std::string>());
+        ASSERT_TRUE(fs::exists(dir / f["path"].get<std::string>())) << f["path"];
+        if (f["kind"] != "video") continue;
+        ++videos;
+        // Every clip opens in ffprobe as H.264 yuv420p at the manifest's size, rate and frame count.
+        const auto probe = runShell("ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+                                    "stream=codec_name,pix_fmt,width,height,r_frame_rate,nb_read_frames -of csv=p=0 " +
+                                    shellQuote((dir / f["path"].get<std::string>()).string()));
+        ASSERT_EQ(probe.status, 0) << probe.output;
+        const std::string expected = "h264,96,72,yuv420p,4/1," + std::to_string(f["frames"].get<int>());
+        EXPECT_EQ(probe.output.substr(0, probe.output.find('\n')), expected) << f["path"];
+    }
+    EXPECT_EQ(videos, 4 * 4 + 4);
+    EXPECT_TRUE(kinds.count("poster"));
+    // Names as SPEC §5.
+    EXPECT_TRUE(fs::exists(dir / "clips" / "story-03_version-point.mp4"));
+    bool likertNamed = false;
+    for (const auto& e : fs::directory_iterator(dir / "clips"))
+        likertNamed |= e.path().filename().string().rfind("likert-01_panels-", 0) == 0;
+    EXPECT_TRUE(likertNamed);
+
+    // A re-run renders nothing.
+    const fs::path copy = freshDir("resume");
+    fs::copy(dir, copy, fs::copy_options::recursive);
+    const auto again = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(copy.string())));
+    ASSERT_EQ(again.status, 0) << again.output;
+    EXPECT_NE(again.output.find("0 of 8 units rendered, 8 already complete"), std::string::npos) << again.output;
+    EXPECT_EQ(readFile(copy / "manifest.json"), readFile(dir / "manifest.json"));
+
+    const auto verified = runSignstim("study verify " + shellQuote(copy.string()));
+    EXPECT_EQ(verified.status, 0) << verified.output;
+    // One changed byte in one clip: verify names it, exit 2.
+    const fs::path clip = copy / "clips" / "story-02_version-vector.mp4";
+    std::string bytes = readFile(clip);
+    bytes[bytes.size() / 2] ^= 0x01;
+    std::ofstream(clip, std::ios::binary | std::ios::trunc) << bytes;
+    const auto tampered = runSignstim("study verify " + shellQuote(copy.string()));
+    EXPECT_EQ(tampered.status, 2) << tampered.output;
+    EXPECT_NE(tampered.output.find("clips/story-02_version-vector.mp4: SHA-256 differs"), std::string::npos)
+        << tampered.output;
+    // A deleted clip of a complete unit is rendered again by the next run (its unit only).
+    fs::remove(clip);
+    const auto repaired = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(copy.string())));
+    ASSERT_EQ(repaired.status, 0) << repaired.output;
+    EXPECT_NE(repaired.output.find("1 of 8 units rendered, 7 already complete"), std::string::npos) << repaired.output;
+    EXPECT_EQ(readFile(copy / "manifest.json"), readFile(dir / "manifest.json"));
+}
+
+TEST(StudyCli, ThreeShardsMergedEqualOneRunByteForByte) {
+    const fs::path& reference = referenceRun();
+    std::vector<std::string> shards;
+    for (int i = 0; i < 3; ++i) {
+        const fs::path dir = freshDir("shard" + std::to_string(i));
+        const auto r = runSignstim(study(shellQuote(kSmall) + " --quiet --shard " + std::to_string(i) + "/3 --out " +
+                                         shellQuote(dir.string())));
+        ASSERT_EQ(r.status, 0) << r.output;
+        EXPECT_NE(r.output.find("units are still missing"), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(dir / "manifest.json"));
+        shards.push_back(shellQuote(dir.string()));
+    }
+    // verify refuses an incomplete folder, naming what is missing.
+    const auto incomplete = runSignstim("study verify " + shards[0]);
+    EXPECT_EQ(incomplete.status, 2) << incomplete.output;
+    EXPECT_NE(incomplete.output.find("units missing"), std::string::npos) << incomplete.output;
+
+    const fs::path merged = freshDir("merged");
+    const auto merge = runSignstim("study merge " + shards[0] + " " + shards[1] + " " + shards[2] + " --into " +
+                                   shellQuote(merged.string()));
+    ASSERT_EQ(merge.status, 0) << merge.output;
+    EXPECT_EQ(readFile(merged / "manifest.json"), readFile(reference / "manifest.json"));
+    EXPECT_EQ(runSignstim("study verify " + shellQuote(merged.string())).status, 0);
+
+    // Two of the three shards are not the whole study: merge says which units are missing.
+    const fs::path partial = freshDir("partial");
+    const auto two = runSignstim("study merge " + shards[0] + " " + shards[1] + " --into " + shellQuote(partial.string()));
+    EXPECT_EQ(two.status, 2) << two.output;
+    EXPECT_NE(two.output.find("units are in none of the folders"), std::string::npos) << two.output;
+
+    // Shards of Slurm's environment form, all into one shared folder, then merge of that folder.
+    const fs::path shared = freshDir("shared");
+    for (int i = 1; i <= 2; ++i) {
+        const auto r = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(shared.string())),
+                                   Capture::StdoutAndStderr,
+                                   "SLURM_ARRAY_TASK_ID=" + std::to_string(i) + " SLURM_ARRAY_TASK_COUNT=2 SLURM_ARRAY_TASK_MIN=1");
+        ASSERT_EQ(r.status, 0) << r.output;
+    }
+    // The second shard completed the set, so its run already wrote the manifest.
+    EXPECT_EQ(readFile(shared / "manifest.json"), readFile(reference / "manifest.json"));
+    EXPECT_EQ(runSignstim("study merge " + shellQuote(shared.string())).status, 0);
+}
+
+TEST(StudyCli, InterruptedRunLeavesNoBrokenFileAndResumesToTheSameBytes) {
+    const fs::path& reference = referenceRun();
+    const fs::path dir = freshDir("interrupted");
+    // SIGTERM (what Slurm sends) once the first unit is complete, while others are in flight.
+    const std::string command =
+        "SIGNSTIM=" + shellQuote((fs::path(SIGNSTIM_BINARY_DIR) / "signstim").string()) + "; \"$SIGNSTIM\" " +
+        study(shellQuote(kSmall) + " --quiet --out " + shellQuote(dir.string())) + " & pid=$!; " +
+        "for i in $(seq 1 600); do [ -e " + shellQuote((dir / ".signstim/units/likert-01.json").string()) +
+        " ] && break; sleep 0.02; done; kill -TERM $pid; wait $pid; echo \"exit $?\"";
+    const auto r = runShell(command);
+    EXPECT_NE(r.output.find("exit 143"), std::string::npos) << r.output;
+    // Nothing half-written: no temporaries, and every clip there is a whole MP4.
+    for (const auto& e : fs::recursive_directory_iterator(dir)) {
+        const std::string name = e.path().filename().string();
+        EXPECT_EQ(name.find(".tmp-"), std::string::npos) << e.path();
+        if (e.path().extension() == ".mp4") {
+            const auto probe = runShell("ffprobe -v error -count_frames -show_entries stream=nb_read_frames -of csv=p=0 " +
+                                        shellQuote(e.path().string()));
+            EXPECT_EQ(probe.status, 0) << e.path() << probe.output;
+            EXPECT_TRUE(probe.output.find("error") == std::string::npos) << probe.output;
+        }
+    }
+    EXPECT_FALSE(fs::exists(dir / "manifest.json"));
+    const auto resumed = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(dir.string())));
+    ASSERT_EQ(resumed.status, 0) << resumed.output;
+    EXPECT_EQ(readFile(dir / "manifest.json"), readFile(reference / "manifest.json"));
+}
+
+}  // namespace

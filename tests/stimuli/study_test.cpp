@@ -1,0 +1,160 @@
+// The study file and the plan drawn from it (stimuli/study.hpp): names as SPEC §5, every
+// participant's schedule in the listing, the design hash, and the listing's JSON round trip
+// (what `study merge` and `verify` read back).
+#include "stimuli/json_source.hpp"
+#include "stimuli/story.hpp"
+#include "stimuli/study.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+using namespace signstim::stimuli;
+
+namespace {
+
+StudyFile parse(const std::string& text) { return parseStudyFile(parseJsonText(text, "study.json")); }
+
+const std::string kStudy = R"({
+  "format": "signstim-study", "version": 1, "title": "T", "seed": 3, "participants": 8,
+  "versions": ["point", "vector", "animator", "uninflected"],
+  "stories": ["a.json", "b.json", "c.json", "d.json", "e.json", "f.json", "g.json", "h.json"],
+  "phase2": {"story": "s.json", "sentences": [2, 1, 3, 4]},
+  "render": {"size": "640x480", "fps": "30000/1001", "msaa": 4, "rate": 1.25}
+})";
+
+std::vector<Story> fakeStories(std::size_t n) {
+    std::vector<Story> stories(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        stories[i].title = "Story " + std::to_string(i + 1) + ", with \"quotes\"";
+        stories[i].sentences.push_back({"JOHN IX(0.9) ASK MARY IX(-0.6)", {}, 1});
+        stories[i].questions.push_back({"Who asked?", {"John", "Mary", "Nobody"}, 0, 0, "ASK", 1});
+    }
+    return stories;
+}
+
+Story fakeSentences() {
+    Story s;
+    for (const char* verb : {"ASK", "GIVE", "SEND", "TELL"}) {
+        StorySentence sentence;
+        sentence.gloss = std::string("JOHN IX(0.9) ") + verb + " MARY IX(-0.6)";
+        StoryItem item;
+        item.kind = StoryItemKind::Verb;
+        item.gloss = verb;
+        sentence.items.push_back(item);
+        s.sentences.push_back(sentence);
+    }
+    return s;
+}
+
+}  // namespace
+
+TEST(StudyFile, ReadsEveryFieldWithItsDefaults) {
+    const StudyFile study = parse(kStudy);
+    EXPECT_EQ(study.seed, 3u);
+    EXPECT_EQ(study.participants, 8u);
+    ASSERT_EQ(study.stories.size(), 8u);
+    EXPECT_EQ(study.stories[1].written, "b.json");
+    EXPECT_EQ(study.phase2Sentences, (std::vector<int>{1, 0, 2, 3}));
+    EXPECT_EQ(study.render.width, 640u);
+    EXPECT_EQ(study.render.fps, "30000/1001");
+    EXPECT_DOUBLE_EQ(study.render.rate, 1.25);
+    EXPECT_EQ(study.quick.width, 320u);  // default quick settings
+    EXPECT_EQ(study.quick.msaa, 1u);
+    EXPECT_EQ(study.likertMinimum, 1);
+    EXPECT_EQ(study.likertMaximum, 10);
+}
+
+TEST(StudyFile, MistakesNameTheLineAndTheField) {
+    const auto expectError = [](std::string text, const std::string& from, const std::string& to, const std::string& field) {
+        text.replace(text.find(from), from.size(), to);
+        try {
+            parse(text);
+            ADD_FAILURE() << "accepted: " << to;
+        } catch (const signstim::InputError& e) {
+            EXPECT_EQ(e.field(), field) << e.what();
+            EXPECT_GT(e.line(), 0) << e.what();
+        }
+    };
+    expectError(kStudy, "\"seed\": 3", "\"seed\": -3", "/seed");
+    expectError(kStudy, "\"seed\": 3", "\"seed\": 3.5", "/seed");
+    expectError(kStudy, "\"participants\": 8", "\"participants\": 100000", "/participants");
+    expectError(kStudy, "\"msaa\": 4", "\"msaa\": 2", "/render/msaa");
+    expectError(kStudy, "\"rate\": 1.25", "\"rate\": 9", "/render/rate");
+    expectError(kStudy, "\"640x480\"", "\"640x481\"", "/render/size");
+    expectError(kStudy, "\"c.json\"", "\"a.json\"", "/stories/2");               // listed twice
+    expectError(kStudy, "\"vector\"", "\"point\"", "/versions/1");              // listed twice
+    expectError(kStudy, ", \"h.json\"]", "]", "/stories");                      // 7 stories over 4 versions
+    expectError(kStudy, "[2, 1, 3, 4]", "[2, 2, 3, 4]", "/phase2/sentences/1");  // listed twice
+}
+
+TEST(StudyPlan, EveryParticipantSeesEveryStoryOnceAndEachVersionEquallyOften) {
+    const StudyFile study = parse(kStudy);
+    const std::vector<Story> stories = fakeStories(8);
+    const Story sentences = fakeSentences();
+    const StudyListing listing = planStudy(study, stories, &sentences, "1.2.3", false);
+    ASSERT_EQ(listing.participants.size(), 8u);
+    EXPECT_EQ(listing.participants[0].id, "P01");
+    EXPECT_EQ(listing.stories[2].clips[0].video, "clips/story-03_version-point.mp4");
+    EXPECT_EQ(listing.stories[2].clips[3].poster, "posters/story-03_version-uninflected.png");
+    EXPECT_TRUE(listing.stories[2].clips[3].frames.empty());
+    for (const ListedParticipant& p : listing.participants) {
+        std::map<std::size_t, int> storyCount, versionCount;
+        for (const ListedPhase1Trial& t : p.phase1) {
+            ++storyCount[t.story];
+            ++versionCount[t.version];
+        }
+        EXPECT_EQ(storyCount.size(), 8u) << p.id;
+        for (const auto& [v, n] : versionCount) EXPECT_EQ(n, 2) << p.id << " version " << v;
+        ASSERT_EQ(p.phase2.size(), 4u);
+        for (std::size_t t = 0; t < p.phase2.size(); ++t) EXPECT_EQ(p.phase2[t].trial, t + 1);
+    }
+    // Phase 2: sentence i of the listing is sentence phase2Sentences[i] of the file, with its verb and panel code.
+    EXPECT_EQ(listing.sentences[0].verb, "GIVE");
+    EXPECT_EQ(listing.sentences[0].id, "likert-01");
+    EXPECT_EQ(listing.sentences[0].panelCode.size(), 4u);
+    EXPECT_EQ(listing.sentences[0].clip.video, "clips/likert-01_panels-" + listing.sentences[0].panelCode + ".mp4");
+}
+
+TEST(StudyPlan, DesignHashFollowsTheDesignNotTheRenderSettings) {
+    const std::vector<Story> stories = fakeStories(8);
+    const Story sentences = fakeSentences();
+    const StudyListing a = planStudy(parse(kStudy), stories, &sentences, "1", false);
+    std::string otherSize = kStudy;
+    otherSize.replace(otherSize.find("640x480"), 7, "320x240");
+    EXPECT_EQ(planStudy(parse(otherSize), stories, &sentences, "1", false).designHash, a.designHash);
+    std::string otherSeed = kStudy;
+    otherSeed.replace(otherSeed.find("\"seed\": 3"), 9, "\"seed\": 4");
+    EXPECT_NE(planStudy(parse(otherSeed), stories, &sentences, "1", false).designHash, a.designHash);
+    EXPECT_EQ(a.designHash.size(), 64u);
+}
+
+TEST(StudyPlan, ListingRoundTripsThroughJson) {
+    const std::vector<Story> stories = fakeStories(8);
+    const Story sentences = fakeSentences();
+    StudyListing listing = planStudy(parse(kStudy), stories, &sentences, "1", true);
+    listing.stories[1].clips[2].durationSeconds = 12.5;
+    listing.stories[1].clips[2].frameCount = 376;
+    const nlohmann::json json = listingToJson(listing);
+    const StudyListing back = listingFromJson(json, "plan.json");
+    EXPECT_EQ(listingToJson(back), json);
+    EXPECT_EQ(back.stories[1].clips[2].frameCount, 376u);
+    EXPECT_EQ(designText(back), designText(listing));
+    // A damaged plan is refused naming the field.
+    nlohmann::json damaged = json;
+    damaged["participants"][0]["phase1"][0]["version"] = 9;
+    try {
+        listingFromJson(damaged, "plan.json");
+        ADD_FAILURE() << "accepted version 9 of 4";
+    } catch (const signstim::InputError& e) {
+        EXPECT_EQ(e.field(), "/participants/0/phase1/0/version");
+    }
+}
+
+TEST(StudyNames, ParticipantIdsArePaddedToTheCount) {
+    EXPECT_EQ(participantId(0, 24), "P01");
+    EXPECT_EQ(participantId(99, 100), "P100");
+    EXPECT_EQ(participantId(4, 100), "P005");
+    EXPECT_EQ(storyClipName(2, VerbVersion::Animator), "story-03_version-animator");
+    EXPECT_EQ(likertClipName(4, "VPAU"), "likert-05_panels-VPAU");
+}
