@@ -190,10 +190,11 @@ std::string panelColumn(std::size_t panel) { return "panel_" + lowercase(panelLa
 // The columns depend on the whole study (its most questions, most choices, its versions), not
 // on one participant, so every participant's file has the same header.
 std::vector<std::string> conditionsColumns(const StudyListing& listing) {
-    std::vector<std::string> columns = {"display",     "phase",      "trial",       "participant", "group",
-                                        "story_id",    "story_title", "version",    "sentence_id", "gloss",
-                                        "verb",        "video_file", "video_name", "poster_file", "poster_name",
-                                        "duration_s"};
+    std::vector<std::string> columns = {
+        "display",  "phase",       "trial",   "participant", "group",                             // every row
+        "story_id", "story_title", "version",                                                    // phase 1
+        "sentence_id", "gloss", "verb",                                                          // phase 2
+        "video_file", "video_name", "poster_file", "poster_name", "duration_s"};                 // every row
     const std::size_t choices = mostChoices(listing);
     for (std::size_t q = 0; q < mostQuestions(listing); ++q) {
         columns.push_back(questionColumn(q, "text"));
