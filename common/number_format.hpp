@@ -9,6 +9,11 @@ namespace signstim {
 // the non-finite values.
 std::string formatNumber(double value);
 
+// Fixed-point text with exactly `decimals` digits after the point ("12.345", "0.500", "-3.000"),
+// the same in every locale; "nan", "inf", "-inf" for the non-finite values. For columns of a
+// table (durations to the millisecond) where every row should read alike.
+std::string formatFixed(double value, int decimals);
+
 // "expected MIN to MAX UNIT, got VALUE" (UNIT may be empty): the one wording of range errors.
 std::string rangeMessage(double minimum, double maximum, const std::string& unit, double value);
 

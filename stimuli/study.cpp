@@ -322,6 +322,9 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
     } else {
         spec.likertTrials = 0;
     }
+    listing.groupVersion.assign(stories.size(), {});
+    for (std::size_t s = 0; s < stories.size(); ++s)
+        for (std::size_t g = 0; g < spec.versions; ++g) listing.groupVersion[s].push_back(phase1Version(spec, s, g));
     for (std::size_t p = 0; p < study.participants; ++p) {
         const ParticipantSchedule schedule = participantSchedule(spec, p);
         ListedParticipant participant;
@@ -462,6 +465,7 @@ json listingToJson(const StudyListing& listing) {
                            {"questions", questions}, {"clips", clips}});
     }
     j["stories"] = stories;
+    j["groupVersion"] = listing.groupVersion;
     json sentences = json::array();
     for (const ListedSentence& s : listing.sentences)
         sentences.push_back({{"id", s.id}, {"gloss", s.gloss}, {"verb", s.verb}, {"panelVersion", s.panelVersion},
@@ -519,6 +523,19 @@ StudyListing listingFromJson(const json& j, const std::string& file) {
         if (clips.size() != versions) r.fail(w + "/clips", "one clip per version");
         for (std::size_t c = 0; c < clips.size(); ++c) s.clips.push_back(r.clip(clips[c], w + "/clips/" + std::to_string(c)));
         listing.stories.push_back(std::move(s));
+    }
+    const json& groupVersion = r.list(j, "groupVersion", "");
+    if (groupVersion.size() != listing.stories.size()) r.fail("/groupVersion", "one row per story");
+    for (std::size_t s = 0; s < groupVersion.size(); ++s) {
+        const std::string w = "/groupVersion/" + std::to_string(s);
+        if (!groupVersion[s].is_array() || groupVersion[s].size() != versions) r.fail(w, "one version per group");
+        std::vector<std::size_t> row;
+        for (const json& v : groupVersion[s]) {
+            if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<std::uint64_t>() >= versions)
+                r.fail(w, "expected version indices below " + std::to_string(versions));
+            row.push_back(v.get<std::size_t>());
+        }
+        listing.groupVersion.push_back(std::move(row));
     }
     const json& sentences = r.list(j, "sentences", "");
     for (std::size_t i = 0; i < sentences.size(); ++i) {

@@ -79,6 +79,11 @@ struct StudyListing {
     std::vector<std::string> versionLetters; // "P", "V", "A", "U"
     int likertMinimum = 1, likertMaximum = 10;  // phase-2 rating scale
     std::vector<ListedStory> stories;
+    // groupVersion[story][group]: the version index phase-1 group `group` (0-based) sees of
+    // `story` — the design's Latin square (study_design.hpp phase1Version), one row per story,
+    // one entry per group. It is the design, not who was recruited: the overview CSV is written
+    // from it, so it is complete even when a group has no participant yet.
+    std::vector<std::vector<std::size_t>> groupVersion;
     std::vector<ListedSentence> sentences;
     std::vector<ListedParticipant> participants;
     // Render settings, for the page and the sheets: "1280x720", 30 fps, MSAA 4.

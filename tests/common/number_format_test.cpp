@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <stdexcept>
 
 using signstim::formatNumber;
 
@@ -28,4 +29,17 @@ TEST(NumberFormat, NonFiniteValuesAreNamed) {
 TEST(NumberFormat, RangeMessageNamesTheRangeTheUnitAndTheValue) {
     EXPECT_EQ(signstim::rangeMessage(-2000, 2000, "mm", 1e308), "expected -2000 to 2000 mm, got 1e+308");
     EXPECT_EQ(signstim::rangeMessage(0, 1, "", 1.0000001), "expected 0 to 1, got 1.0000001");
+}
+
+TEST(NumberFormat, FixedTextHasExactlyTheAskedDecimals) {
+    using signstim::formatFixed;
+    EXPECT_EQ(formatFixed(12.3456, 3), "12.346");
+    EXPECT_EQ(formatFixed(0.5, 3), "0.500");
+    EXPECT_EQ(formatFixed(2.0, 0), "2");
+    EXPECT_EQ(formatFixed(-3.0, 3), "-3.000");
+    EXPECT_EQ(formatFixed(-0.0004, 3), "0.000");  // no sign on a zero
+    EXPECT_EQ(formatFixed(1e20, 1), "100000000000000000000.0");
+    EXPECT_EQ(formatFixed(std::numeric_limits<double>::quiet_NaN(), 3), "nan");
+    EXPECT_EQ(formatFixed(-std::numeric_limits<double>::infinity(), 3), "-inf");
+    EXPECT_THROW(formatFixed(1.0, -1), std::invalid_argument);
 }
