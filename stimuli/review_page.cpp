@@ -86,8 +86,15 @@ video.quad { width: 480px; }
   text-align: center; color: #fff; background: var(--version, #5b6470); }
 .v0 { --version: #2f6690; } .v1 { --version: #7a4f96; } .v2 { --version: #2e7d4f; } .v3 { --version: #9a5b16; } .v4 { --version: #8d3b4a; }
 .version-name { margin-left: .35em; }
-ol.questions { margin: 0; padding-left: 1.4rem; }
-ol.questions > li + li { margin-top: .7rem; }
+ol.questions { margin: 0; padding-left: 1.4rem; display: grid; grid-template-columns: repeat(auto-fill, minmax(16rem, 1fr));
+  gap: .9rem 2.25rem; }
+ol.questions p { margin: 0; }
+table.trials td.story { width: 11rem; }
+table.trials td.story .version { margin-top: .4rem; white-space: nowrap; }
+table.trials td.clip { width: calc(272px + 1.5rem); }
+table.trials td.clip.quad { width: calc(400px + 1.5rem); }
+table.trials video { width: 272px; max-width: none; }
+table.trials video.quad { width: 400px; }
 ol.choices { margin: .15rem 0 0; padding-left: 1.6rem; }
 ol.choices li.answer { font-weight: 600; }
 .key { margin-left: .5em; padding: 0 .35em; border: 1px solid var(--ok); border-radius: 3px; color: var(--ok);
@@ -447,14 +454,14 @@ private:
                         versionBadge(trial.version, false) + "</li>";
             }
             out_ += "</ol>\n";
-            out_ += "<table class=\"trials\">\n<thead><tr><th>#</th><th>Story</th><th>Version</th><th>Clip</th>"
+            out_ += "<table class=\"trials\">\n<thead><tr><th>#</th><th>Story, version</th><th>Clip</th>"
                     "<th>Questions (answer key marked)</th></tr></thead>\n<tbody>\n";
             for (const ListedPhase1Trial& trial : participant.phase1) {
                 const ListedStory& story = listing_.stories[trial.story];
                 out_ += "<tr id=\"" + anchor + "-trial-" + std::to_string(trial.trial) + "\"><td class=\"num\">" +
-                        std::to_string(trial.trial) + "</td><td><a href=\"#" + storyAnchor_[trial.story] + "\">" +
-                        escapeHtml(story.id) + "</a><br>" + escapeHtml(story.title) + "</td><td>" +
-                        versionBadge(trial.version) + "</td><td>";
+                        std::to_string(trial.trial) + "</td><td class=\"story\"><a href=\"#" + storyAnchor_[trial.story] + "\">" +
+                        escapeHtml(story.id) + "</a><br>" + escapeHtml(story.title) + "<div class=\"version\">" +
+                        versionBadge(trial.version) + "</div></td><td class=\"clip\">";
                 video(story.clips[trial.version], "none",
                       participant.id + " trial " + std::to_string(trial.trial) + ": " + story.id + ", " +
                           versionName(trial.version));
@@ -477,7 +484,7 @@ private:
                 out_ += "<tr id=\"" + anchor + "-likert-" + std::to_string(trial.trial) + "\"><td class=\"num\">" +
                         std::to_string(trial.trial) + "</td><td><a href=\"#" + sentenceAnchor_[trial.sentence] + "\">" +
                         escapeHtml(sentence.id) + "</a><br><span class=\"gloss\">" + escapeHtml(sentence.gloss) +
-                        "</span></td><td>";
+                        "</span></td><td class=\"clip quad\">";
                 video(sentence.clip, "none",
                       participant.id + " phase-2 trial " + std::to_string(trial.trial) + ": " + sentence.id, true);
                 out_ += "</td><td>";
