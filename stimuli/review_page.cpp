@@ -108,7 +108,7 @@ details.participant { border: 1px solid var(--line); border-radius: 6px; margin:
 details.participant > summary { cursor: pointer; padding: .55rem 1rem; background: var(--soft); border-radius: 6px; }
 details.participant[open] > summary { border-bottom: 1px solid var(--line); border-radius: 6px 6px 0 0; }
 details.participant > summary .pid { font-weight: 600; margin-right: .75rem; }
-details.participant > .body { padding: .25rem 1.25rem 1.25rem; }
+details.participant > .body { padding: .25rem 1.25rem 1.25rem; overflow-x: auto; }
 .strip { display: flex; flex-wrap: wrap; gap: .6rem; margin: .75rem 0 .5rem; padding: 0; list-style: none; }
 .strip li { width: 112px; font-size: .75rem; color: var(--muted); line-height: 1.3; }
 .strip img { display: block; width: 112px; height: auto; margin-bottom: .2rem; border-radius: 3px; background: var(--soft); }
@@ -134,8 +134,10 @@ footer { margin-top: 4rem; padding-top: 1rem; border-top: 1px solid var(--line);
   details.participant > .body { padding: 0; }
   details.participant { break-before: page; }
   tr, figure, section.sentence { break-inside: avoid; }
-  video { width: 220px; }
-  video.quad { width: 320px; }
+  video, table.trials video { width: 200px; }
+  video.quad, table.trials video.quad { width: 300px; }
+  table.trials td.clip, table.trials td.clip.quad { width: auto; }
+  video::-webkit-media-controls { display: none !important; }
 }
 )css";
 
