@@ -1,11 +1,13 @@
 #include "app/study_documents.hpp"
 
+#include "stimuli/review_page.hpp"
 #include "stimuli/study_exports.hpp"
 
 namespace signstim::app {
 
 std::vector<StudyDocument> studyDocuments(const stimuli::StudyListing& listing) {
     std::vector<StudyDocument> documents;
+    documents.push_back({"index.html", "review", "", stimuli::reviewPageHtml(listing)});
     documents.push_back({"overview.csv", "overview", "", stimuli::overviewCsv(listing)});
     documents.push_back({"question-sheets.html", "sheet", "", stimuli::questionSheetHtml(listing)});
     for (std::size_t p = 0; p < listing.participants.size(); ++p) {

@@ -294,6 +294,7 @@ public:
         second_.finish();
     }
     std::uint64_t framesPushed() const override { return count_; }
+    bool recycle(render::Image& out) override { return second_.recycle(out); }
 
 private:
     render::FrameSink& first_;

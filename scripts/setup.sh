@@ -14,6 +14,10 @@ packages=(
   # targets and refuses to configure when /usr/bin/iconvert & co. are missing; they live in
   # openimageio-tools, which --no-install-recommends leaves out.
   libopenimageio-dev openimageio-tools
+  # The review-page test (tests/browser/check_review_page.py) opens the study's index.html in
+  # headless Chromium and plays every clip; it runs with Debian's /usr/bin/python3 and is
+  # skipped, not passed, without these.
+  chromium chromium-driver python3-selenium
 )
 
 missing=()

@@ -127,6 +127,7 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
     std::uint64_t submitted = 0, retrieved = 0;
     const auto retrieveOne = [&] {
         render::Image image;
+        sink.recycle(image);  // a written frame's buffer: no fresh allocation (and page faults) per frame
         renderer.retrieve(image);
         sink.push(std::move(image));
         ++retrieved;
@@ -195,14 +196,25 @@ SharedRenderStats renderClipsSharingFrames(render::Renderer& renderer, int scene
     std::deque<int> targets;
     std::uint64_t framesDone = 0;
     const auto retrieveOne = [&] {
+        // Buffers of frames the sinks have written are reused: a fresh multi-hundred-kilobyte
+        // allocation per image costs page faults that slow the render thread noticeably.
         render::Image image;
-        renderer.retrieve(image);
         const int target = targets.front();
         targets.pop_front();
+        sinks[target >= 0 ? static_cast<std::size_t>(target) : sinks.size() - 1]->recycle(image);
+        renderer.retrieve(image);
         if (target >= 0) {
             sinks[static_cast<std::size_t>(target)]->push(std::move(image));
         } else {
-            for (std::size_t i = 0; i + 1 < sinks.size(); ++i) sinks[i]->push(render::Image(image));
+            for (std::size_t i = 0; i + 1 < sinks.size(); ++i) {
+                render::Image copy;
+                sinks[i]->recycle(copy);
+                copy.width = image.width;
+                copy.height = image.height;
+                copy.format = image.format;
+                copy.bytes.assign(image.bytes.begin(), image.bytes.end());
+                sinks[i]->push(std::move(copy));
+            }
             sinks.back()->push(std::move(image));
         }
         // A frame is done when its last image (the shared one, or the last clip's) is out.

@@ -48,6 +48,7 @@ public:
     void push(render::Image&& frame) override;
     void finish() override { next_.finish(); }
     std::uint64_t framesPushed() const override { return count_; }
+    bool recycle(render::Image& out) override { return next_.recycle(out); }
     const render::Image& still() const { return still_; }
 
 private:

@@ -41,11 +41,11 @@ std::string readFile(const fs::path& path) {
 
 std::string study(const std::string& arguments) { return "study " + arguments + " --scenes " + shellQuote(kScenes); }
 
-// One uninterrupted run of the small study (its "render" settings), shared by the tests that
-// compare other runs against it.
+// One uninterrupted run of the small study (its "render" settings), for the tests that compare
+// other runs against it. CTest runs each test in its own process, in parallel: one folder per test.
 const fs::path& referenceRun() {
     static const fs::path dir = [] {
-        const fs::path d = freshDir("reference");
+        const fs::path d = freshDir(std::string("reference-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
         const auto r = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(d.string())),
                                    Capture::StdoutAndStderr, "SIGNSTIM_VALIDATION=1");
         EXPECT_EQ(r.status, 0) << r.output;

@@ -4,3 +4,16 @@ signstim_add_test(signstim_app_study_tests
   SOURCES study_cli_test.cpp
   LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
 add_dependencies(signstim_app_study_tests signstim)
+
+# The review page of a rendered study in headless Chromium (label browser; one browser at a
+# time; a missing browser is a skip, shown as such by CTest).
+add_executable(signstim_app_study_browser_tests study_browser_test.cpp)
+target_link_libraries(signstim_app_study_browser_tests PRIVATE signstim_test_run_command GTest::gtest_main)
+target_include_directories(signstim_app_study_browser_tests PRIVATE ${PROJECT_SOURCE_DIR})
+target_compile_definitions(signstim_app_study_browser_tests PRIVATE
+  SIGNSTIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}" SIGNSTIM_BINARY_DIR="${PROJECT_BINARY_DIR}"
+  SIGNSTIM_BROWSER_PYTHON="${SIGNSTIM_BROWSER_PYTHON}")
+add_dependencies(signstim_app_study_browser_tests signstim)
+gtest_discover_tests(signstim_app_study_browser_tests DISCOVERY_TIMEOUT 60
+  PROPERTIES ENVIRONMENT "SIGNSTIM_SOURCE_DIR=${PROJECT_SOURCE_DIR}" LABELS browser RESOURCE_LOCK chromium
+    SKIP_REGULAR_EXPRESSION "\\[  SKIPPED \\]" TIMEOUT 300)

@@ -1,0 +1,36 @@
+// The review page of a real study (rendered by the built signstim: real MP4s from our encoder)
+// opened in headless Chromium by tests/browser/check_review_page.py: no console errors, every
+// referenced file exists, every video loads with the duration the manifest gives. Skipped,
+// never passed, when Chromium, its driver or python3-selenium is missing.
+#include "tests/app/run_command.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using signstim::test::runShell;
+using signstim::test::runSignstim;
+using signstim::test::shellQuote;
+
+TEST(StudyBrowser, ReviewPageOfARenderedStudyPassesInHeadlessChromium) {
+    const std::string scenes = fs::path(SIGNSTIM_SOURCE_DIR).append("scenes").string();
+    const std::string small = fs::path(SIGNSTIM_SOURCE_DIR).append("tests/app/data/small-study.json").string();
+    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "study_browser_test" / "study";
+    fs::remove_all(dir);
+    const auto run = runSignstim("study " + shellQuote(small) + " --quiet --out " + shellQuote(dir.string()) +
+                                 " --scenes " + shellQuote(scenes));
+    ASSERT_EQ(run.status, 0) << run.output;
+    ASSERT_TRUE(fs::exists(dir / "index.html"));
+    const fs::path checker = fs::path(SIGNSTIM_SOURCE_DIR) / "tests" / "browser" / "check_review_page.py";
+    const auto check = runShell(shellQuote(SIGNSTIM_BROWSER_PYTHON) + " " + shellQuote(checker.string()) + " " +
+                                shellQuote(dir.string()) + " --screenshot " +
+                                shellQuote((dir.parent_path() / "review-page.png").string()));
+    if (check.status == 77) GTEST_SKIP() << check.output;
+    EXPECT_EQ(check.status, 0) << check.output;
+}
+
+}  // namespace
