@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # signstim quick start. Each form installs missing Debian packages, builds, then:
-#   ./run.sh          runs the main job and prints where its output is
+#   ./run.sh          runs the main job (the default study, quick) and prints where to look
 #   ./run.sh test     runs the whole test suite
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
@@ -26,5 +26,7 @@ if [[ $mode == test ]]; then
   # lavapipe renders with several threads per draw; two test processes keep both cores busy.
   ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
 else
-  "$build/signstim" demo --out out
+  # The default study at its quick settings (320x240, 15 fps): a few minutes on 2 cores.
+  # Full quality: build/signstim study --out study (docs/study.md).
+  "$build/signstim" study --out study --quick
 fi
