@@ -345,11 +345,11 @@ double posterSeconds(const Timeline& timeline) {
 
 class Progress {
 public:
-    Progress(std::uint64_t totalFrames, bool quiet)
-        : total_(std::max<std::uint64_t>(1, totalFrames)), quiet_(quiet), terminal_(::isatty(STDERR_FILENO) == 1),
+    Progress(double totalWork, bool quiet)
+        : total_(std::max(1.0, totalWork)), quiet_(quiet), terminal_(::isatty(STDERR_FILENO) == 1),
           start_(Clock::now()), last_(start_) {}
 
-    void frames(std::uint64_t done, const std::string& unit, std::size_t unitNumber, std::size_t units) {
+    void frames(double done, const std::string& unit, std::size_t unitNumber, std::size_t units) {
         done_ = done;
         if (quiet_) return;
         const auto now = Clock::now();
@@ -357,7 +357,7 @@ public:
         last_ = now;
         print(unit, unitNumber, units, false);
     }
-    void unitDone(std::uint64_t done, const std::string& unit, std::size_t unitNumber, std::size_t units) {
+    void unitDone(double done, const std::string& unit, std::size_t unitNumber, std::size_t units) {
         done_ = done;
         if (quiet_) return;
         print(unit, unitNumber, units, !terminal_);
@@ -369,9 +369,9 @@ public:
 private:
     void print(const std::string& unit, std::size_t unitNumber, std::size_t units, bool unitLine) {
         const double elapsed = secondsSince(start_);
-        const double fraction = static_cast<double>(done_) / static_cast<double>(total_);
+        const double fraction = std::min(1.0, done_ / total_);
         std::string eta = "estimating";
-        if (done_ > 0 && elapsed > 1.0) {
+        if (done_ > 0.0 && elapsed > 1.0) {
             const double left = elapsed / fraction - elapsed;
             char text[32];
             std::snprintf(text, sizeof text, "%d:%02d left", static_cast<int>(left) / 60, static_cast<int>(left) % 60);
@@ -391,7 +391,7 @@ private:
         }
     }
 
-    std::uint64_t total_, done_ = 0;
+    double total_, done_ = 0.0;  // work: estimated images drawn
     bool quiet_, terminal_;
     Clock::time_point start_, last_;
     bool printed_ = false;
@@ -423,7 +423,7 @@ public:
     }
 
     void render(const Unit& unit, const std::vector<Timeline>& timelines, const std::string& inputHash,
-                const std::function<void(std::uint64_t)>& progress, StudyRunReport& report) {
+                const std::function<void(double)>& progress, StudyRunReport& report) {
         std::vector<std::unique_ptr<signer::TimelineClip>> clips;
         for (const Timeline& t : timelines)
             clips.push_back(std::make_unique<signer::TimelineClip>(signer_.rig(), signer_.shapes(), t));
@@ -450,7 +450,9 @@ public:
 
         const auto start = Clock::now();
         if (unit.story) {
-            const auto frameProgress = [&](std::uint64_t done, std::uint64_t) { progress(done * clips.size()); };
+            const auto frameProgress = [&](std::uint64_t done, std::uint64_t total) {
+                progress(static_cast<double>(done) / static_cast<double>(total));
+            };
             if (options_.shareFrames) {
                 const signer::SharedRenderStats stats = signer::renderClipsSharingFrames(
                     renderer_, handle_, signer_.avatar(), signer_.rig(), clipPointers, fps, entries, frameProgress);
@@ -466,7 +468,9 @@ public:
                     ro.framesPerSecond = fps;
                     const std::uint64_t n = signer::renderClips(
                         renderer_, handle_, signer_.avatar(), signer_.rig(), {clipPointers[i]}, {}, ro, *entries[i],
-                        [&](std::uint64_t done, std::uint64_t) { progress(before + done); });
+                        [&](std::uint64_t done, std::uint64_t total) {
+                            progress(static_cast<double>(before + done) / static_cast<double>(total * clips.size()));
+                        });
                     job->sinks[i]->finish();  // one clip after another, as separate runs would
                     before += n;
                     report.renderedImages += n;
@@ -489,7 +493,9 @@ public:
             ro.rows = static_cast<std::uint32_t>((panels.size() + ro.columns - 1) / ro.columns);
             const std::uint64_t n =
                 signer::renderClips(renderer_, handle_, signer_.avatar(), signer_.rig(), panels, labels, ro,
-                                    *job->sinks.front()->entry(), [&](std::uint64_t done, std::uint64_t) { progress(done); });
+                                    *job->sinks.front()->entry(), [&](std::uint64_t done, std::uint64_t total) {
+                                        progress(static_cast<double>(done) / static_cast<double>(total));
+                                    });
             report.renderedImages += n;
             report.clipFrames += n;
             job->frames = n;
@@ -759,10 +765,10 @@ StudyRunReport runStudy(const StudyRunOptions& options) {
     struct Work {
         Unit unit;
         std::vector<Timeline> timelines;
-        std::uint64_t outputFrames = 0;
+        double weight = 0.0;  // estimated images to draw: what the progress bar counts
     };
     std::vector<Work> work;
-    std::uint64_t totalFrames = 0;
+    double totalWeight = 0.0;
     for (const Unit& unit : mine) {
         if (unitComplete(dir, unit.id, hashes.at(unit.id))) {
             ++report.skipped;
@@ -771,22 +777,41 @@ StudyRunReport runStudy(const StudyRunOptions& options) {
         Work w{unit, unitTimelines(s, unitStory(s, unit)), 0};
         double duration = 0.0;
         for (const Timeline& t : w.timelines) duration = std::max(duration, t.durationSeconds);
-        w.outputFrames = frameCount(duration, s.frameRate.value()) * (unit.story ? w.timelines.size() : 1);
-        totalFrames += w.outputFrames;
+        // A shared frame is drawn once, a frame in a verb slot once per version; a side-by-side
+        // frame draws every version's view.
+        const double fps = s.frameRate.value();
+        const std::uint64_t frames = frameCount(duration, fps);
+        const double versions = static_cast<double>(w.timelines.size());
+        if (unit.story && options.shareFrames) {
+            std::uint64_t inVerbs = 0;
+            for (std::uint64_t f = 0; f < frames; ++f) {
+                const double t = static_cast<double>(f) / fps;
+                for (const TimelineSpan& span : w.timelines.front().spans)
+                    if (span.kind == SpanKind::Verb && t >= span.startSeconds && t <= span.endSeconds) {
+                        ++inVerbs;
+                        break;
+                    }
+            }
+            w.weight = static_cast<double>(frames) + (versions - 1.0) * static_cast<double>(inVerbs);
+        } else {
+            w.weight = static_cast<double>(frames) * versions;
+        }
+        totalWeight += w.weight;
         work.push_back(std::move(w));
     }
     report.timelineSeconds = secondsSince(timelineStart);
 
     if (!work.empty()) {
         UnitRenderer renderer(s, options, dir);
-        Progress progress(totalFrames, options.quiet);
-        std::uint64_t before = 0;
+        Progress progress(totalWeight, options.quiet);
+        double before = 0.0;
         for (std::size_t i = 0; i < work.size(); ++i) {
             const Work& w = work[i];
             renderer.render(
                 w.unit, w.timelines, hashes.at(w.unit.id),
-                [&](std::uint64_t done) { progress.frames(before + done, w.unit.id, i + 1, work.size()); }, report);
-            before += w.outputFrames;
+                [&](double fraction) { progress.frames(before + fraction * w.weight, w.unit.id, i + 1, work.size()); },
+                report);
+            before += w.weight;
             progress.unitDone(before, w.unit.id, i + 1, work.size());
             ++report.rendered;
         }

@@ -230,3 +230,33 @@ TEST(StudyCli, InterruptedRunLeavesNoBrokenFileAndResumesToTheSameBytes) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(StudyCli, ThreeVersionsWithPngFramesRenderAndVerify) {
+    const std::string file = fs::path(SIGNSTIM_SOURCE_DIR).append("tests/app/data/three-versions.json").string();
+    const fs::path dir = freshDir("three-versions");
+    const auto r = runSignstim(study(shellQuote(file) + " --quiet --out " + shellQuote(dir.string())),
+                               Capture::StdoutAndStderr, "SIGNSTIM_VALIDATION=1");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const nlohmann::json manifest = nlohmann::json::parse(readFile(dir / "manifest.json"));
+    int folders = 0, videos = 0;
+    for (const auto& f : manifest["files"]) {
+        if (f["kind"] == "video") ++videos;
+        if (f["kind"] != "frames") continue;
+        ++folders;
+        std::size_t pngs = 0;
+        for (const auto& e : fs::directory_iterator(dir / f["path"].get<std::string>())) pngs += e.path().extension() == ".png";
+        EXPECT_EQ(pngs, f["files"].get<std::size_t>()) << f["path"];
+    }
+    EXPECT_EQ(videos, 3 * 3 + 3);
+    EXPECT_EQ(folders, videos);
+    // Three panels: A, B, C in a 2x2 grid; the file name gives the mapping.
+    EXPECT_TRUE(fs::exists(dir / "clips" / "likert-01_panels-APU.mp4")) << r.output;
+    EXPECT_EQ(runSignstim("study verify " + shellQuote(dir.string())).status, 0);
+    const std::string overview = readFile(dir / "overview.csv");
+    EXPECT_NE(overview.find("group_3"), std::string::npos) << overview;
+    EXPECT_EQ(overview.find("group_4"), std::string::npos) << overview;
+}
+
+}  // namespace
