@@ -7,18 +7,22 @@ namespace signstim::app {
 
 std::vector<StudyDocument> studyDocuments(const stimuli::StudyListing& listing) {
     std::vector<StudyDocument> documents;
-    documents.push_back({"index.html", "review", "", stimuli::reviewPageHtml(listing)});
-    documents.push_back({"overview.csv", "overview", "", stimuli::overviewCsv(listing)});
-    documents.push_back({"question-sheets.html", "sheet", "", stimuli::questionSheetHtml(listing)});
+    documents.push_back({"index.html", "review", "", stimuli::reviewPageHtml(listing),
+                         "review page: every participant's set, every story's versions, the phase-2 mappings"});
+    documents.push_back({"overview.csv", "overview", "", stimuli::overviewCsv(listing), "story x group -> version"});
+    documents.push_back({"question-sheets.html", "sheet", "", stimuli::questionSheetHtml(listing),
+                         "every story's gloss and questions with the answer key (printable)"});
     for (std::size_t p = 0; p < listing.participants.size(); ++p) {
         const std::string id = listing.participants[p].id;
         const std::string folder = "participants/" + id + "/";
-        documents.push_back({folder + id + "_conditions.csv", "conditions", id, stimuli::conditionsCsv(listing, p)});
+        documents.push_back({folder + id + "_conditions.csv", "conditions", id, stimuli::conditionsCsv(listing, p),
+                             id + "'s trials in order, for PsychoPy, OpenSesame and Gorilla"});
         documents.push_back({folder + id + "_timeline_variables.json", "jspsych", id,
-                             stimuli::jspsychTimelineVariables(listing, p)});
+                             stimuli::jspsychTimelineVariables(listing, p), id + "'s trials for jsPsych timeline_variables"});
         if (!listing.sentences.empty())
             documents.push_back({folder + id + "_likert-response-sheet.html", "sheet", id,
-                                 stimuli::likertResponseSheetHtml(listing, p)});
+                                 stimuli::likertResponseSheetHtml(listing, p),
+                                 id + "'s phase-2 response sheet (printable; no mapping shown)"});
     }
     return documents;
 }

@@ -16,6 +16,7 @@ struct StudyDocument {
     std::string kind;         // "conditions", "jspsych", "overview", "sheet", "review", ...
     std::string participant;  // "P03" for a participant's file, else empty
     std::string contents;
+    std::string shows;        // what it is, for the manifest
 };
 
 std::vector<StudyDocument> studyDocuments(const stimuli::StudyListing& listing);

@@ -437,13 +437,23 @@ public:
         job->inputHash = inputHash;
         std::vector<render::FrameSink*> entries;
         if (unit.story) {
-            for (const ListedClip& clip : s_.listing.stories[unit.index].clips) {
+            const ListedStory& story = s_.listing.stories[unit.index];
+            for (std::size_t v = 0; v < story.clips.size(); ++v) {
+                const ListedClip& clip = story.clips[v];
                 job->clips.push_back(clip);
+                job->shows.push_back({{"phase", 1}, {"story", story.id}, {"title", story.title},
+                                      {"version", s_.listing.versions[v]}});
                 job->sinks.push_back(makeClipSinks(dir_, clip, s_.frameRate, poster));
                 entries.push_back(job->sinks.back()->entry());
             }
         } else {
-            job->clips.push_back(s_.listing.sentences[unit.index].clip);
+            const ListedSentence& sentence = s_.listing.sentences[unit.index];
+            json panels = json::object();
+            for (std::size_t k = 0; k < sentence.panelVersion.size(); ++k)
+                panels[panelLabel(k)] = s_.listing.versions[sentence.panelVersion[k]];
+            job->clips.push_back(sentence.clip);
+            job->shows.push_back({{"phase", 2}, {"sentence", sentence.id}, {"gloss", sentence.gloss}, {"verb", sentence.verb},
+                                  {"panels", panels}});
             job->sinks.push_back(makeClipSinks(dir_, job->clips.back(), s_.frameRate, poster));
         }
         waitForEncoders(job->sinks.size(), report);
@@ -527,6 +537,7 @@ private:
         Unit unit;
         std::string inputHash;
         std::vector<ListedClip> clips;
+        std::vector<json> shows;  // what each clip shows, for the manifest
         std::vector<std::unique_ptr<ClipSinks>> sinks;
         std::uint64_t frames = 0;
     };
@@ -562,12 +573,18 @@ private:
             video["width"] = settings.width;
             video["height"] = settings.height;
             video["durationSeconds"] = static_cast<double>(job.frames) / rate.value();
+            video["shows"] = job.shows[i];
             files.push_back(video);
             json poster = fileEntry(dir, clip.poster, "poster");
             poster["width"] = settings.width;
             poster["height"] = settings.height;
+            poster["shows"] = job.shows[i];
             files.push_back(poster);
-            if (!clip.frames.empty()) files.push_back(fileEntry(dir, clip.frames, "frames"));
+            if (!clip.frames.empty()) {
+                json frames = fileEntry(dir, clip.frames, "frames");
+                frames["shows"] = job.shows[i];
+                files.push_back(frames);
+            }
         }
         json record;
         record["unit"] = job.unit.id;
@@ -636,6 +653,7 @@ void writeFinalFiles(const fs::path& dir, const json& plan, const StudyListing& 
         entry["sha256"] = sha256Hex(document.contents);
         entry["bytes"] = static_cast<std::uint64_t>(document.contents.size());
         if (!document.participant.empty()) entry["participant"] = document.participant;
+        entry["shows"] = document.shows;
         files.push_back(entry);
     }
     std::sort(files.begin(), files.end(), [](const json& a, const json& b) { return a["path"] < b["path"]; });
