@@ -759,6 +759,9 @@ StudyRunReport runStudy(const StudyRunOptions& options) {
     const LoadedStudy s = loadStudy(options);
     const fs::path& dir = options.out;
     ensureWritableDirectory(dir);
+    // What a run killed outright (SIGKILL, a node lost) left behind on this machine.
+    if (const std::size_t stale = removeStaleTemporaries(dir); stale > 0 && !options.quiet)
+        std::fprintf(stderr, "signstim study: removed %zu temporar%s left by a killed run\n", stale, stale == 1 ? "y" : "ies");
     const json plan = makePlan(s);
     if (const fs::path planFile = dir / kPlanFile; fs::exists(planFile)) {
         // A folder of another study is not overwritten unit by unit: that would mix two studies.
@@ -922,6 +925,7 @@ StudyRunReport mergeStudyFolders(const std::vector<fs::path>& sources, const fs:
     }
     if (!plan) throw InputError(sources.front().string(), 0, "", "not a study folder (no .signstim/plan.json)");
     ensureWritableDirectory(target);
+    removeStaleTemporaries(target);
     writeFileAtomic(target / kPlanFile, plan->dump(2) + "\n");
     const std::map<std::string, std::string> hashes = planHashes(*plan);
     std::size_t copied = 0;

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -126,13 +128,53 @@ bool isMountPoint(const fs::path& dir) {
     return here.st_dev != above.st_dev;
 }
 
+namespace {
+
+// This machine's name as it may appear in a file name (letters, digits, '-', '.').
+const std::string& hostTag() {
+    static const std::string tag = [] {
+        char name[256] = {};
+        if (::gethostname(name, sizeof name - 1) != 0 || name[0] == '\0') return std::string("host");
+        std::string t;
+        for (const char* c = name; *c; ++c)
+            t += (std::isalnum(static_cast<unsigned char>(*c)) || *c == '-' || *c == '.') ? *c : '_';
+        return t;
+    }();
+    return tag;
+}
+
+}  // namespace
+
 fs::path temporaryPathFor(const fs::path& target) {
     static std::atomic<unsigned> counter{0};
     // Without the trailing '/' of "frames/": the temporary must be a sibling of the target,
-    // not a file inside it.
+    // not a file inside it. The host and PID say whose it is (removeStaleTemporaries).
     fs::path tmp = withoutTrailingSeparators(target);
-    tmp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+    tmp += ".tmp-" + hostTag() + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
     return tmp;
+}
+
+std::size_t removeStaleTemporaries(const fs::path& dir) {
+    const std::string marker = ".tmp-" + hostTag() + "-";
+    std::vector<fs::path> stale;
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        const std::size_t at = name.rfind(marker);
+        if (at == std::string::npos) continue;
+        // NAME.tmp-HOST-PID-N: the PID must be a number and no longer running here.
+        const std::string rest = name.substr(at + marker.size());
+        const std::size_t dash = rest.find('-');
+        if (dash == std::string::npos || dash == 0) continue;
+        const std::string pidText = rest.substr(0, dash);
+        if (pidText.find_first_not_of("0123456789") != std::string::npos || pidText.size() > 9) continue;
+        const pid_t pid = static_cast<pid_t>(std::stol(pidText));
+        if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+        stale.push_back(it->path());
+        if (it->is_directory(ec)) it.disable_recursion_pending();
+    }
+    for (const fs::path& p : stale) fs::remove_all(p, ec);
+    return stale.size();
 }
 
 void ensureWritableDirectory(const fs::path& dir) { probeFolder(dir, dir); }

@@ -28,8 +28,14 @@ void writeNewFile(const std::filesystem::path& path, std::string_view bytes,
                   const std::filesystem::path& nameInMessages = {});
 
 // A temporary name next to `target` (same folder, so rename() is atomic), unique per process
-// and call: TARGET.tmp-PID-N. Trailing separators of `target` are ignored ("frames/").
+// and call: TARGET.tmp-HOST-PID-N. Trailing separators of `target` are ignored ("frames/").
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
+
+// Removes, under `dir`, the temporaries this machine's processes left when they were killed
+// outright (SIGKILL, a power cut: no chance to clean up): TARGET.tmp-HOST-PID-N of this host
+// whose PID no longer runs. Another machine's temporaries (a shared cluster folder) are left
+// alone. Returns how many were removed.
+std::size_t removeStaleTemporaries(const std::filesystem::path& dir);
 
 // `path` without trailing '/' ("frames/" -> "frames"; "/" stays): tab completion adds one to
 // folder names, and a temporary built from "frames/" would land inside the folder.
@@ -75,7 +81,7 @@ private:
     bool committed_ = false;
 };
 
-// A temporary folder beside `target` (TARGET.tmp-PID-N), created and registered for removal
+// A temporary folder beside `target` (TARGET.tmp-HOST-PID-N), created and registered for removal
 // on a signal; removed with its contents when destroyed without commit(). commit() puts it in
 // place of `target`: renamed when `target` does not exist, else exchanged with it atomically
 // (renameat2 RENAME_EXCHANGE) and the old folder removed (the caller checks beforehand that
