@@ -746,10 +746,10 @@ void checkStudy(const StudyRunOptions& options) {
     }
     const StudyDesignSpec spec = s.study.designSpec();
     std::printf("%s: ok: \"%s\"\n  %zu stories x %zu versions, %zu participants in %zu groups (each sees every story once, "
-                "each version %zu times), %zu side-by-side sentences\n  %.0f s of stories per version, %.0f s of side-by-side "
+                "each version %zu time%s), %zu side-by-side sentences\n  %.0f s of stories per version, %.0f s of side-by-side "
                 "clips; design %s\n",
                 s.study.file.c_str(), s.study.title.c_str(), spec.stories, spec.versions, spec.participants, spec.versions,
-                spec.stories / spec.versions, spec.likertTrials, storySeconds, likertSeconds,
+                spec.stories / spec.versions, spec.stories / spec.versions == 1 ? "" : "s", spec.likertTrials, storySeconds, likertSeconds,
                 s.listing.designHash.substr(0, 12).c_str());
 }
 
