@@ -102,6 +102,18 @@ SignerPosture VerbClip::postureAt(double seconds) const {
     return posture;
 }
 
+render::Pose ClipPoser::next(double seconds, SignerPosture* posture, PoseReport* report) {
+    if (previous_ && clip_->solveAfresh(previousSeconds_, seconds)) previous_.reset();
+    const SignerPosture wanted = clip_->postureAt(seconds);
+    PoseReport solved;
+    render::Pose pose = rig_->pose(wanted, &solved, previous_ ? &*previous_ : nullptr);
+    previous_ = solved;
+    previousSeconds_ = seconds;
+    if (posture) *posture = wanted;
+    if (report) *report = solved;
+    return pose;
+}
+
 std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const render::Scene& avatar,
                           const SignerRig& rig, const std::vector<const Clip*>& clips,
                           const std::vector<std::string>& labels, const ClipRenderOptions& options,
@@ -119,8 +131,8 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
     const render::Frame restFrame = postureFrame(avatar, rig, sceneHandle, SignerPosture{}, aspect);
     const render::Camera camera = restFrame.views.front().camera;
 
-    std::vector<PoseReport> previous(clips.size());
-    std::vector<bool> hasPrevious(clips.size(), false);
+    std::vector<ClipPoser> posers;
+    for (const Clip* clip : clips) posers.emplace_back(rig, *clip);
     const std::uint32_t inFlight = std::max(1u, renderer.framesInFlight());
     std::uint64_t submitted = 0, retrieved = 0;
     const auto retrieveOne = [&] {
@@ -136,16 +148,11 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
         frame.columns = options.columns;
         frame.rows = options.rows;
         for (std::size_t i = 0; i < clips.size(); ++i) {
-            if (f > 0 && clips[i]->solveAfresh(static_cast<double>(f - 1) / options.framesPerSecond, t))
-                hasPrevious[i] = false;
-            PoseReport report;
             render::View view;
             view.scene = sceneHandle;
-            view.pose = rig.pose(clips[i]->postureAt(t), &report, hasPrevious[i] ? &previous[i] : nullptr);
+            view.pose = posers[i].next(t);
             view.camera = camera;
             if (i < labels.size()) view.label = labels[i];
-            previous[i] = report;
-            hasPrevious[i] = true;
             frame.views.push_back(std::move(view));
         }
         if (submitted - retrieved >= inFlight) retrieveOne();
