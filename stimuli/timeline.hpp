@@ -49,6 +49,12 @@ struct TimelineSpan {
     std::string label;        // "ASK", "IX(0.9)", "fs-JOHN"
     int sentence = -1;        // 0-based; -1 for the rest at the start and the end
     int item = -1;            // 0-based within the sentence
+    // The item's own keys (a verb's: its keys and the hold that pads it to the slot's length,
+    // and a HOLD that follows it): the transition into the item ends at keysStartSeconds, the
+    // one out of it starts at keysEndSeconds. A frame outside every span's keys is in a
+    // transition (or at rest after a verb, inside its slot).
+    double keysStartSeconds = 0.0, keysEndSeconds = 0.0;
+    SignContact contact;  // what the sign or verb touches on purpose (the lexicon's, verbs.json's)
 };
 
 struct Timeline {
