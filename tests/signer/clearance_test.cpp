@@ -1,5 +1,6 @@
 // The hands keep clear of each other and of the body (signer/clearance.hpp): the capsules
-// follow the drawn hands and measure the gaps between their surfaces.
+// follow the drawn hands and measure the gaps between their surfaces, and transitions are
+// routed around the hands (signer/timeline_clip.hpp).
 #include "signer/clearance.hpp"
 #include "signer/timeline_clip.hpp"
 #include "signer/verb_render.hpp"
@@ -12,7 +13,6 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -21,6 +21,8 @@ using namespace signstim;
 namespace {
 
 const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR) / "scenes";
+const std::vector<stimuli::VerbVersion> kVersions{stimuli::VerbVersion::Point, stimuli::VerbVersion::Vector,
+                                                  stimuli::VerbVersion::Animator, stimuli::VerbVersion::Uninflected};
 
 // What `signstim story` builds a story from: the default signer (scenes/avatar/signer.glb),
 // the handshapes, verbs, trained models and lexicon of scenes/.
@@ -50,6 +52,16 @@ struct World {
 const World& world() {
     static const World w;
     return w;
+}
+
+stimuli::TimelineKey key(double t, const glm::dvec3& positionMm, const glm::dvec3& fingers, const glm::dvec3& palm,
+                         const std::string& shape) {
+    stimuli::TimelineKey k;
+    k.timeSeconds = t;
+    k.pose.positionMm = positionMm;
+    k.pose.orientation = stimuli::orientationFromFingersPalm(fingers, palm);
+    k.handshape = shape;
+    return k;
 }
 
 }  // namespace
@@ -94,4 +106,80 @@ TEST(Clearance, ClosestApproachIsTheSmallestSurfaceGap) {
     // Crossing capsules interpenetrate by the sum of their radii.
     const std::vector<hand::Capsule> crossing{{{-40, 0, 25}, {40, 0, 25}, 8.0f}};
     EXPECT_NEAR(signer::closestApproach(first, crossing).gapMm, -18.0f, 1e-4f);
+}
+
+TEST(Clearance, TransitionsDetourAroundTheOtherHandAndKeepTheirKeys) {
+    // The right hand crosses from the signer's left to the right while the left hand holds
+    // still across its straight path: the transition goes around the left hand, and the
+    // keys, and the stops at them, stay as they are.
+    const World& w = world();
+    const signer::SignerRig& rig = w.signer.rig();
+    stimuli::Timeline timeline;
+    timeline.story = "crossing";
+    timeline.version = "test";
+    timeline.durationSeconds = 1.4;
+    const glm::dvec3 forward(0, 0, 1), down(0, -1, 0), right(1, 0, 0);
+    const auto rightAt = [&](double t, double x) { return key(t, {x, -40, 300}, forward, down, "B"); };
+    timeline.right = {rightAt(0.0, -170), rightAt(0.4, -170), rightAt(1.0, 170), rightAt(1.4, 170)};
+    for (double t : {0.0, 0.4, 1.0, 1.4}) timeline.left.push_back(key(t, {-10, -40, 330}, forward, right, "1"));
+    timeline.spans = {{stimuli::SpanKind::Sign, 0.0, 0.4, "A", 0, 0, 0.0, 0.4, {}},
+                      {stimuli::SpanKind::Sign, 0.4, 1.4, "B", 0, 1, 1.0, 1.4, {}}};
+    timeline.gaze = {{0.0, std::nullopt}, {1.4, std::nullopt}};
+    const signer::TimelineClip clip(rig, w.signer.shapes(), timeline);
+
+    // The straight blend would go through the left hand.
+    signer::SignerPosture straight = clip.postureAt(0.7);
+    straight.rightWrist = signer::blendTargets(signer::armTargetFromSigningSpace(timeline.right[1].pose),
+                                               signer::armTargetFromSigningSpace(timeline.right[2].pose),
+                                               static_cast<float>(stimuli::minimumJerk(0.5)));
+    std::vector<hand::Capsule> rightHand, leftHand;
+    signer::handCapsules(rig, hand::Side::Right, straight.rightHand, straight.rightWrist->wristMm,
+                         straight.rightWrist->handRotation, rightHand);
+    signer::handCapsules(rig, hand::Side::Left, straight.leftHand, straight.leftWrist->wristMm,
+                         straight.leftWrist->handRotation, leftHand);
+    ASSERT_LT(signer::closestApproach(rightHand, leftHand).gapMm, -20.0f);
+
+    // The routed one does not.
+    for (const signer::ClearanceFrame& frame : signer::clearanceFrames(rig, clip))
+        EXPECT_GE(frame.clearance.hands.gapMm, signer::kTransitionClearanceMm - signer::kClearanceToleranceMm)
+            << "at " << frame.seconds << " s";
+    const float detourMm = glm::distance(clip.postureAt(0.7).rightWrist->wristMm, straight.rightWrist->wristMm);
+    EXPECT_GT(detourMm, 20.0f);
+    // The keys hold, and the hand leaves and reaches them at rest: 5 ms after the key it has
+    // moved only as far as the minimum-jerk profile takes it (10u³ of the way).
+    for (double t : {0.4, 1.0}) {
+        const glm::vec3 atKey = signer::armTargetFromSigningSpace(t < 0.5 ? timeline.right[1].pose : timeline.right[2].pose).wristMm;
+        EXPECT_LT(glm::distance(clip.postureAt(t).rightWrist->wristMm, atKey), 1e-3f) << t;
+        const double near = t < 0.5 ? t + 0.005 : t - 0.005;
+        EXPECT_LT(glm::distance(clip.postureAt(near).rightWrist->wristMm, atKey), 0.5f) << near;
+    }
+}
+
+TEST(Clearance, RoutedFramesOutsideTheVerbSlotsAreTheSameInEveryVersion) {
+    // A detour depends only on the keys at its ends and on where the arms are, and the arms
+    // are solved afresh after every verb slot: so the frames a study renders once stay shared.
+    const World& w = world();
+    const stimuli::Story story = w.story(kScenes / "stories" / "story-01.json");
+    std::vector<signer::TimelineClip> clips;
+    for (stimuli::VerbVersion v : kVersions)
+        clips.emplace_back(w.signer.rig(), w.signer.shapes(), stimuli::buildTimeline(story, v, w.sources()));
+    const stimuli::Timeline& first = clips.front().timeline();
+    int compared = 0;
+    for (int frame = 0; frame / 30.0 <= first.durationSeconds; ++frame) {
+        const double t = frame / 30.0;
+        bool inSlot = false;
+        for (const stimuli::TimelineSpan& span : first.spans)
+            inSlot = inSlot || (span.kind == stimuli::SpanKind::Verb && t > span.startSeconds - 1e-9 && t < span.endSeconds + 1e-9);
+        if (inSlot) continue;
+        const signer::SignerPosture a = clips.front().postureAt(t);
+        for (const signer::TimelineClip& other : clips) {
+            const signer::SignerPosture b = other.postureAt(t);
+            EXPECT_EQ(a.rightWrist->wristMm, b.rightWrist->wristMm) << other.timeline().version << " at " << t;
+            EXPECT_EQ(a.leftWrist->wristMm, b.leftWrist->wristMm) << other.timeline().version << " at " << t;
+            EXPECT_EQ(a.rightWrist->handRotation, b.rightWrist->handRotation) << other.timeline().version << " at " << t;
+            EXPECT_EQ(a.leftWrist->handRotation, b.leftWrist->handRotation) << other.timeline().version << " at " << t;
+        }
+        ++compared;
+    }
+    EXPECT_GT(compared, 300);
 }
