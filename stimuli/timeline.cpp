@@ -261,8 +261,14 @@ private:
 
     Segment pointingSegment(double position) const {
         const glm::dvec3 target = arcPoint(position);
-        const glm::dvec3 direction = glm::normalize(target - kRightShoulderMm);
-        const glm::dvec3 hand = kRightShoulderMm + options_.pointingReachMm * direction;
+        glm::dvec3 direction = glm::normalize(target - kRightShoulderMm);
+        glm::dvec3 hand = kRightShoulderMm + options_.pointingReachMm * direction;
+        // Toward a referent on the left the reach from the right shoulder crosses the chest:
+        // the hand stays in front of it there and points from where it is.
+        if (hand.x < kRightShoulderMm.x && hand.z < options_.pointingMinimumForwardMm) {
+            hand.z = options_.pointingMinimumForwardMm;
+            direction = glm::normalize(target - hand);
+        }
         // Index along the pointing direction, palm turned down (toward -y), as IX is signed.
         const glm::dquat orientation = orientationOf(direction, glm::dvec3(0.0, -1.0, 0.0));
         const HandPose pose = poseAt(hand, orientation);

@@ -88,6 +88,9 @@ struct TimelineOptions {
     glm::dvec3 fingerspellingMm{150.0, 170.0, 230.0};
     // How far the index of IX reaches toward the referent, from the right shoulder [D].
     double pointingReachMm = 330.0;
+    // ... but no nearer the chest than this (forward, z) where the hand is in front of it [D:
+    // the default signer's chest is ~110 mm deep; the fist needs the rest].
+    double pointingMinimumForwardMm = 200.0;
 };
 
 // Gives a verb instance in the requested version (point/vector need trained models,

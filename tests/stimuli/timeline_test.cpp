@@ -181,6 +181,36 @@ TEST(Timeline, SpansNameTheirItemsOwnKeysAndWhatTheyTouch) {
     }
 }
 
+TEST(Timeline, PointingAcrossTheChestStaysInFrontOfItAndAimsAtTheReferent) {
+    // IX toward the far left: reached from the right shoulder, the hand would be inside the
+    // chest; it stays in front and the index still aims at the referent. IX toward the far
+    // right keeps the plain reach.
+    const Timeline t = buildTimeline(world().story, VerbVersion::Point, world().sources());
+    const TimelineOptions options;
+    bool left = false, right = false;
+    for (const TimelineSpan& span : t.spans) {
+        if (span.kind != SpanKind::Pointing) continue;
+        const TimelineSample s = sampleTrack(t.right, 0.5 * (span.keysStartSeconds + span.keysEndSeconds));
+        const HandPose& pose = s.from->pose;
+        // In front of the chest (the default signer's is 340 mm wide), not in it.
+        if (pose.positionMm.x < 170.0) {
+            EXPECT_GE(pose.positionMm.z, options.pointingMinimumForwardMm - 1e-9);
+        }
+        // Which referent: the closest arc point to the index's line.
+        const glm::dvec3 fingers = fingersDirection(pose.orientation);
+        double best = 1e9, position = 0.0;
+        for (double p = -1.0; p <= 1.0; p += 0.01) {
+            const glm::dvec3 to = arcPoint(p) - pose.positionMm;
+            const double miss = glm::length(to - glm::dot(to, fingers) * fingers);
+            if (miss < best) best = miss, position = p;
+        }
+        EXPECT_LT(best, 1.0) << span.label;
+        left = left || position < -0.5;
+        right = right || position > 0.5;
+    }
+    EXPECT_TRUE(left && right);
+}
+
 // Position of a non-resting sample; the rest place is the signer's, so samples touching rest
 // are skipped.
 std::optional<glm::dvec3> position(const std::vector<TimelineKey>& track, double t) {
