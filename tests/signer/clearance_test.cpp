@@ -1,6 +1,8 @@
 // The hands keep clear of each other and of the body (signer/clearance.hpp): the capsules
-// follow the drawn hands and measure the gaps between their surfaces, and transitions are
-// routed around the hands (signer/timeline_clip.hpp).
+// follow the drawn hands, transitions are routed around the hands, and every frame of the
+// twelve default stories in the four versions keeps the rules — the hands touch, each other
+// or the body, only inside signs whose citation form touches, and a transition never takes
+// them deeper than the items at its ends.
 #include "signer/clearance.hpp"
 #include "signer/timeline_clip.hpp"
 #include "signer/verb_render.hpp"
@@ -13,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -183,3 +186,73 @@ TEST(Clearance, RoutedFramesOutsideTheVerbSlotsAreTheSameInEveryVersion) {
     }
     EXPECT_GT(compared, 300);
 }
+
+// Each default story in the four versions, every frame at 30 fps as `signstim story` renders it.
+class StoryClearance : public testing::TestWithParam<int> {
+protected:
+    struct Checked {
+        stimuli::Timeline timeline;
+        signer::ClearanceSummary summary;
+    };
+    static std::vector<Checked> check(int story) {
+        const World& w = world();
+        char name[32];
+        std::snprintf(name, sizeof name, "story-%02d.json", story);
+        const stimuli::Story parsed = w.story(kScenes / "stories" / name);
+        std::vector<Checked> out;
+        for (stimuli::VerbVersion v : kVersions) {
+            const signer::TimelineClip clip(w.signer.rig(), w.signer.shapes(), stimuli::buildTimeline(parsed, v, w.sources()));
+            const signer::ClearanceSummary summary =
+                signer::checkClearance(clip.timeline(), signer::clearanceFrames(w.signer.rig(), clip));
+            // The closest approaches, for the record (ctest -V).
+            const auto show = [&](const signer::ClearanceExtreme& e) {
+                char text[160];
+                std::snprintf(text, sizeof text, "%6.1f mm (%s, %.2f s)", e.gapMm,
+                              signer::describeClearancePlace(clip.timeline(), e.before, e.after).c_str(), e.seconds);
+                return std::string(text);
+            };
+            std::printf("%s %-11s hands: at transitions %s, in signs %s, touching %s; hand-body: %s, touching %s\n",
+                        name, stimuli::toString(v).c_str(), show(summary.handsAtTransitions).c_str(),
+                        show(summary.handsInSigns).c_str(), show(summary.handsInContactSigns).c_str(),
+                        show(summary.body).c_str(), show(summary.bodyInContactSigns).c_str());
+            out.push_back({clip.timeline(), summary});
+        }
+        return out;
+    }
+    // The violations that `select` picks, one line each.
+    template <typename Select>
+    static std::string violations(const std::vector<Checked>& checked, Select select) {
+        std::string text;
+        for (const Checked& c : checked)
+            for (const signer::ClearanceViolation& v : c.summary.violations) {
+                if (!select(v)) continue;
+                char line[200];
+                std::snprintf(line, sizeof line, "\n  %s %s: %s %.1f mm apart at %.2f s (at least %.1f allowed)",
+                              c.timeline.version.c_str(), signer::describeClearancePlace(c.timeline, v.before, v.after).c_str(),
+                              v.hands ? "hands" : "hand and body", v.gapMm, v.seconds, v.allowedMm);
+                text += line;
+            }
+        return text;
+    }
+};
+
+TEST_P(StoryClearance, HandsNeverInterpenetrateAtTransitions) {
+    // Neither each other nor the body, deeper than the items at the transition's ends have
+    // them (the issue: "no interpenetration of the hands at transitions").
+    const std::string found = violations(check(GetParam()), [](const signer::ClearanceViolation& v) { return v.transition; });
+    EXPECT_TRUE(found.empty()) << found;
+}
+
+TEST_P(StoryClearance, HandsTouchOnlyInSignsThatTouch) {
+    // Inside an item's own keys the hands touch each other, or a hand the body, only where
+    // the lexicon or verbs.json says the citation form does ("contact").
+    const std::string found = violations(check(GetParam()), [](const signer::ClearanceViolation& v) { return !v.transition; });
+    EXPECT_TRUE(found.empty()) << found;
+}
+
+INSTANTIATE_TEST_SUITE_P(DefaultStories, StoryClearance, testing::Range(1, 13),
+                         [](const testing::TestParamInfo<int>& info) {
+                             char name[16];
+                             std::snprintf(name, sizeof name, "story%02d", info.param);
+                             return std::string(name);
+                         });
