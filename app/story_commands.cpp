@@ -5,6 +5,7 @@
 #include "app/commands.hpp"
 #include "app/story_world.hpp"
 #include "common/error.hpp"
+#include "signer/clearance.hpp"
 #include "signer/timeline_clip.hpp"
 #include "stimuli/lexicon.hpp"
 #include "stimuli/scenes_path.hpp"
@@ -12,6 +13,7 @@
 #include "stimuli/timeline.hpp"
 #include "stimuli/verb_models.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -45,6 +47,40 @@ VerbVersion requireVersion(const StoryOptions& o) {
     const std::optional<VerbVersion> v = parseVerbVersion(o.version);
     if (!v) throw commandLineError("--version", "'" + o.version + "' is not a version (point, vector, animator, uninflected)");
     return *v;
+}
+
+// `--check`: how close the signer's hands come, to each other and to the body, in each
+// version (signer/clearance.hpp), and where a rule is broken.
+void reportClearance(const StoryWorld& world, const Story& story, const TimelineOptions& timing) {
+    const Signer signer(world.scenes);
+    const auto place = [](const Timeline& t, const ClearanceExtreme& e) {
+        char text[200];
+        std::snprintf(text, sizeof text, "%.1f mm (%s, %.2f s)", e.gapMm, describeClearancePlace(t, e.before, e.after).c_str(),
+                      e.seconds);
+        return std::string(std::isinf(e.gapMm) ? "-" : text);
+    };
+    std::printf("closest approach of the hands (mm; negative: they overlap), every frame at 30 fps:\n");
+    std::vector<std::string> warnings;
+    for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
+        const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(story, v, world.sources(story), timing));
+        const Timeline& t = clip.timeline();
+        const ClearanceSummary summary = checkClearance(t, clearanceFrames(signer.rig(), clip));
+        std::printf("  %s: at transitions %s; in signs %s; in signs where they touch %s\n", toString(v).c_str(),
+                    place(t, summary.handsAtTransitions).c_str(), place(t, summary.handsInSigns).c_str(),
+                    place(t, summary.handsInContactSigns).c_str());
+        std::printf("  %*s  a hand and the body %s; in signs that touch it %s\n", static_cast<int>(toString(v).size()), "",
+                    place(t, summary.body).c_str(), place(t, summary.bodyInContactSigns).c_str());
+        for (const ClearanceViolation& violation : summary.violations) {
+            char text[320];
+            std::snprintf(text, sizeof text, "%s: %s: %s %.1f mm apart at %.2f s (%.1f mm allowed)%s", toString(v).c_str(),
+                          describeClearancePlace(t, violation.before, violation.after).c_str(),
+                          violation.hands ? "the hands interpenetrate," : "a hand is in the body,", violation.gapMm,
+                          violation.seconds, violation.allowedMm,
+                          violation.transition ? "" : "; if the sign touches there on purpose, say so (\"contact\")");
+            warnings.push_back(text);
+        }
+    }
+    for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
 }
 
 void renderStory(const StoryOptions& o, const StoryWorld& world, const Story& story, VerbVersion version) {
@@ -83,7 +119,8 @@ void registerStoryCommands(Commands& commands) {
     story->add_option("--version", o->version, "point | vector | animator | uninflected");
     auto* check = story->add_flag("--check", o->check,
                                   "Only check: the story, its signs, letters and verbs, in all four versions (exit 2 "
-                                  "naming file:line:column)");
+                                  "naming file:line:column); then report how close the hands come to each other and "
+                                  "to the body (warnings where they interpenetrate)");
     auto* json = story->add_flag("--json", o->json, "Print the timeline of --version as JSON")->excludes(check);
     story->add_option("--out", o->outPath, "FILE.mp4, FILE.png (a still of the first verb) or a folder of frames")
         ->excludes(check)
@@ -119,6 +156,8 @@ void registerStoryCommands(Commands& commands) {
             std::printf("%s: ok: \"%s\", %zu characters, %zu sentences, %d verbs, %zu questions, %.1f s in every version\n",
                         o->file.c_str(), story.title.c_str(), story.characters.size(),
                         story.sentences.size(), verbs, story.questions.size(), seconds);
+            std::fflush(stdout);
+            reportClearance(world, story, timing);
             return;
         }
         if (o->json) {

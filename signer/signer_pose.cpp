@@ -389,6 +389,14 @@ hand::ArmTarget SignerRig::presentingTarget(hand::Side side) const {
     return {{-right.wristMm.x, right.wristMm.y, right.wristMm.z}, mirrorHandRotation(right.handRotation)};
 }
 
+hand::ArmPose SignerRig::solveArm(hand::Side side, const SignerPosture& posture, const PoseReport* previous) const {
+    const bool right = side == hand::Side::Right;
+    const hand::ArmTarget target = (right ? posture.rightWrist : posture.leftWrist).value_or(restingTarget(side));
+    hand::ArmSolveOptions options;
+    if (previous) options.previousElbowDirection = (right ? previous->right : previous->left).elbowDirection;
+    return hand::solveArm(arm(side), target, options);
+}
+
 render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report, const PoseReport* previous) const {
     const render::Scene& scene = *scene_;
     PoseReport local;
@@ -397,11 +405,7 @@ render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report, c
     std::map<std::string, glm::quat> canonical;  // posed canonical world rotations
     for (hand::Side side : {hand::Side::Right, hand::Side::Left}) {
         const bool right = side == hand::Side::Right;
-        const hand::ArmTarget target =
-            (right ? posture.rightWrist : posture.leftWrist).value_or(restingTarget(side));
-        hand::ArmSolveOptions options;
-        if (previous) options.previousElbowDirection = (right ? previous->right : previous->left).elbowDirection;
-        const hand::ArmPose arm = hand::solveArm(this->arm(side), target, options);
+        const hand::ArmPose arm = solveArm(side, posture, previous);
         (right ? out.right : out.left) = arm;
 
         const std::string s = sideName(side);

@@ -121,6 +121,9 @@ public:
     // flips between neighbouring frames); `report` receives reach/limit information.
     render::Pose pose(const SignerPosture& posture, PoseReport* report = nullptr,
                       const PoseReport* previous = nullptr) const;
+    // One arm's solution as pose() finds it (ArmPose of PoseReport), without posing the
+    // skeleton: cheap enough to look ahead along a clip.
+    hand::ArmPose solveArm(hand::Side side, const SignerPosture& posture, const PoseReport* previous = nullptr) const;
 
 private:
     struct Bone {

@@ -1,8 +1,12 @@
 #include "signer/timeline_clip.hpp"
 
+#include "signer/clearance.hpp"
 #include "signer/signer_pose.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace signstim::signer {
 namespace {
@@ -17,6 +21,55 @@ struct Resolved {
     hand::ArmTarget target;
     hand::HandControls controls;
 };
+
+// The shapes a detour's bumps take: u^a·(1−u)^b scaled to 1 at its peak, u = a/(a+b); with
+// a, b ≥ 3 its velocity and acceleration vanish at both ends of the transition. Early, middle
+// and late peaks, for hands that would meet soon after leaving, halfway, or just before
+// arriving (an item that ends or starts in contact).
+struct BumpShape {
+    int a, b;
+};
+constexpr std::array<BumpShape, 3> kBumpShapes{{{3, 3}, {3, 6}, {6, 3}}};
+
+float bump(int shape, double u) {
+    if (u <= 0.0 || u >= 1.0) return 0.0f;
+    const auto [a, b] = kBumpShapes[static_cast<std::size_t>(shape)];
+    const double peak = static_cast<double>(a) / (a + b);
+    return static_cast<float>(std::pow(u / peak, a) * std::pow((1.0 - u) / (1.0 - peak), b));
+}
+
+bool sameTarget(const std::optional<hand::ArmTarget>& a, const std::optional<hand::ArmTarget>& b) {
+    return glm::distance(a->wristMm, b->wristMm) < 0.01f && std::abs(glm::dot(a->handRotation, b->handRotation)) > 0.999999f;
+}
+
+bool sameControls(const hand::HandControls& a, const hand::HandControls& b) {
+    if (a.thumb.bendDeg != b.thumb.bendDeg || a.thumb.spreadDeg != b.thumb.spreadDeg || a.thumb.mcpDeg != b.thumb.mcpDeg ||
+        a.thumb.ipDeg != b.thumb.ipDeg)
+        return false;
+    for (std::size_t f = 0; f < a.fingers.size(); ++f)
+        if (a.fingers[f].spreadDeg != b.fingers[f].spreadDeg || a.fingers[f].bend != b.fingers[f].bend ||
+            a.fingers[f].hook != b.fingers[f].hook)
+            return false;
+    return true;
+}
+
+// How close the hands come to each other and to the body where the arms put them.
+struct Gaps {
+    float hands = 0.0f, rightBody = 0.0f, leftBody = 0.0f;
+    Approach handsApproach;
+};
+
+Gaps measure(const SignerRig& rig, const SignerPosture& posture, const PoseReport& arms) {
+    SignerCapsules capsules;
+    handCapsules(rig, hand::Side::Right, posture.rightHand, arms.right.wristMm, arms.right.hand, capsules.right);
+    handCapsules(rig, hand::Side::Left, posture.leftHand, arms.left.wristMm, arms.left.hand, capsules.left);
+    Gaps g;
+    g.handsApproach = closestApproach(capsules.right, capsules.left);
+    g.hands = g.handsApproach.gapMm;
+    g.rightBody = closestApproach(capsules.right, bodyCapsules()).gapMm;
+    g.leftBody = closestApproach(capsules.left, bodyCapsules()).gapMm;
+    return g;
+}
 
 }  // namespace
 
@@ -35,6 +88,151 @@ TimelineClip::TimelineClip(const SignerRig& rig, const stimuli::HandshapeLibrary
     for (const auto* track : {&timeline_.right, &timeline_.left})
         for (const stimuli::TimelineKey& key : *track)
             if (!key.rest) shapes.at(key.handshape);
+    // Transitions: neighbouring keys that no item's own keys hold (both hands have keys at
+    // every transition's ends; the right track lists them). Routed in time order, following
+    // the arms frame by frame as they will be drawn, since a detour changes where the elbows
+    // are when the next transition starts.
+    const auto insideItem = [&](double start, double end) {
+        for (const stimuli::TimelineSpan& span : timeline_.spans)
+            if (span.keysStartSeconds <= start && end <= span.keysEndSeconds) return true;
+        return false;
+    };
+    ArmChain chain;
+    std::uint64_t frame = 0;
+    const std::vector<stimuli::TimelineKey>& keys = timeline_.right;
+    for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
+        const double start = keys[k].timeSeconds, end = keys[k + 1].timeSeconds;
+        if (end <= start || insideItem(start, end)) continue;
+        for (; static_cast<double>(frame) / kRoutingFramesPerSecond <= start; ++frame) {
+            const double t = static_cast<double>(frame) / kRoutingFramesPerSecond;
+            advance(chain, t, postureAt(t));
+        }
+        Detour detour = routeTransition(start, end, chain);
+        if (!detour.bumps.empty()) detours_.push_back(std::move(detour));
+    }
+}
+
+PoseReport TimelineClip::advance(ArmChain& chain, double seconds, const SignerPosture& posture) const {
+    if (chain.previous && solveAfresh(chain.previousSeconds, seconds)) chain.previous.reset();
+    const PoseReport* previous = chain.previous ? &*chain.previous : nullptr;
+    PoseReport report;
+    report.right = rig_->solveArm(hand::Side::Right, posture, previous);
+    report.left = rig_->solveArm(hand::Side::Left, posture, previous);
+    chain.previous = report;
+    chain.previousSeconds = seconds;
+    return report;
+}
+
+TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double endSeconds, const ArmChain& chain) const {
+    // [D] The transition's frames are followed from where the arms are when it starts. Bumps
+    // are added one at a time, at most three, while they help: each shape and way aside —
+    // apart along the line between the hands' closest points, to the sides, up, down,
+    // forward — is tried at 40 mm per hand at its peak, then the three most promising at each
+    // size from 10 to 160 mm, and the one that leaves the smallest shortfall is kept. A
+    // transition they cannot clear keeps the best they found (the clearance check reports it).
+    constexpr float kShortfallToleranceMm = 0.5f;
+    constexpr int kMostBumps = 3;
+    constexpr std::array<float, 5> kSizesMm{10.0f, 20.0f, 40.0f, 80.0f, 160.0f};
+    Detour detour;
+    detour.startSeconds = startSeconds;
+    detour.endSeconds = endSeconds;
+    const SignerPosture from = straightPostureAt(startSeconds), to = straightPostureAt(endSeconds);
+    const bool rightMoves = !sameTarget(from.rightWrist, to.rightWrist) || !sameControls(from.rightHand, to.rightHand);
+    const bool leftMoves = !sameTarget(from.leftWrist, to.leftWrist) || !sameControls(from.leftHand, to.leftHand);
+    if (!rightMoves && !leftMoves) return detour;
+
+    // The frames inside the transition, and its end.
+    std::vector<double> times;
+    for (auto f = static_cast<std::uint64_t>(std::floor(startSeconds * kRoutingFramesPerSecond)) + 1;
+         static_cast<double>(f) / kRoutingFramesPerSecond < endSeconds; ++f)
+        times.push_back(static_cast<double>(f) / kRoutingFramesPerSecond);
+    times.push_back(endSeconds);
+    std::vector<SignerPosture> straight;
+    for (double t : times) straight.push_back(straightPostureAt(t));
+    const auto offsetAt = [&](const std::vector<Bump>& bumps, std::size_t j, bool right) {
+        glm::vec3 offset(0.0f);
+        const double u = (times[j] - startSeconds) / (endSeconds - startSeconds);
+        for (const Bump& b : bumps) offset += bump(b.shape, u) * (right ? b.rightMm : b.leftMm);
+        return offset;
+    };
+    // The hands along the transition with `bumps`: every frame's gaps, or (bounded) the
+    // largest shortfall, given up on as soon as it exceeds `bound`.
+    float handsNeeded = 0.0f, rightBodyNeeded = 0.0f, leftBodyNeeded = 0.0f;
+    const auto follow = [&](const std::vector<Bump>& bumps, std::vector<Gaps>* gaps, float bound) {
+        ArmChain arms = chain;
+        float worst = 0.0f;
+        for (std::size_t j = 0; j < times.size(); ++j) {
+            SignerPosture p = straight[j];
+            p.rightWrist->wristMm += offsetAt(bumps, j, true);
+            p.leftWrist->wristMm += offsetAt(bumps, j, false);
+            const Gaps g = measure(*rig_, p, advance(arms, times[j], p));
+            if (gaps) gaps->push_back(g);
+            worst = std::max({worst, handsNeeded - g.hands, rightBodyNeeded - g.rightBody, leftBodyNeeded - g.leftBody});
+            if (worst > bound) break;
+        }
+        return worst;
+    };
+    std::vector<Gaps> straightGaps;
+    follow({}, &straightGaps, std::numeric_limits<float>::infinity());
+    // Never closer than the clearance, or than the ends are (an item there touches).
+    ArmChain atStart = chain;
+    const Gaps first = measure(*rig_, from, advance(atStart, startSeconds, from));
+    const Gaps& last = straightGaps.back();
+    handsNeeded = std::min({kTransitionClearanceMm, first.hands, last.hands});
+    // A hand that does not move in the transition (resting) is not asked to clear the body.
+    constexpr float kNotAsked = -std::numeric_limits<float>::infinity();
+    rightBodyNeeded = rightMoves ? std::min({kTransitionClearanceMm, first.rightBody, last.rightBody}) : kNotAsked;
+    leftBodyNeeded = leftMoves ? std::min({kTransitionClearanceMm, first.leftBody, last.leftBody}) : kNotAsked;
+    float shortfall = follow({}, nullptr, std::numeric_limits<float>::infinity());
+    if (shortfall <= kShortfallToleranceMm) return detour;
+
+    // Ways aside, per millimetre: (right hand, left hand). A hand that does not move in the
+    // transition stays where it is.
+    const Gaps& closest = *std::min_element(straightGaps.begin(), straightGaps.end(),
+                                            [](const Gaps& a, const Gaps& b) { return a.hands < b.hands; });
+    glm::vec3 apart = closest.handsApproach.onFirst - closest.handsApproach.onSecond;
+    apart = glm::length(apart) > 1e-3f ? glm::normalize(apart) : glm::vec3(-1.0f, 0.0f, 0.0f);
+    const glm::vec3 rightward(-1.0f, 0.0f, 0.0f), up(0.0f, 1.0f, 0.0f), forward(0.0f, 0.0f, 1.0f);
+    const std::array<std::pair<glm::vec3, glm::vec3>, 5> ways{{{apart, -apart},
+                                                              {rightward, -rightward},
+                                                              {up, -up},
+                                                              {-up, up},
+                                                              {forward, forward}}};
+    const auto withBump = [&](int shape, const std::pair<glm::vec3, glm::vec3>& way, float size) {
+        std::vector<Bump> trial = detour.bumps;
+        trial.push_back({shape, rightMoves ? size * way.first : glm::vec3(0.0f), leftMoves ? size * way.second : glm::vec3(0.0f)});
+        return trial;
+    };
+    while (static_cast<int>(detour.bumps.size()) < kMostBumps && shortfall > kShortfallToleranceMm) {
+        // Every shape and way at a middle size; then every size of the three most promising.
+        struct Trial {
+            float shortfallMm;
+            int shape;
+            std::size_t way;
+        };
+        std::vector<Trial> trials;
+        for (int shape = 0; shape < static_cast<int>(kBumpShapes.size()); ++shape)
+            for (std::size_t w = 0; w < ways.size(); ++w)
+                if ((rightMoves && ways[w].first != glm::vec3(0.0f)) || (leftMoves && ways[w].second != glm::vec3(0.0f)))
+                    trials.push_back({follow(withBump(shape, ways[w], kSizesMm[2]), nullptr, shortfall), shape, w});
+        std::stable_sort(trials.begin(), trials.end(),
+                         [](const Trial& a, const Trial& b) { return a.shortfallMm < b.shortfallMm; });
+        float best = shortfall - 0.25f;  // a bump must help by a quarter millimetre
+        std::optional<Bump> chosen;
+        for (std::size_t t = 0; t < std::min<std::size_t>(3, trials.size()); ++t)
+            for (float size : kSizesMm) {
+                std::vector<Bump> trial = withBump(trials[t].shape, ways[trials[t].way], size);
+                const float result = follow(trial, nullptr, best);
+                if (result < best) {
+                    best = result;
+                    chosen = trial.back();
+                }
+            }
+        if (!chosen) break;
+        detour.bumps.push_back(*chosen);
+        shortfall = best;
+    }
+    return detour;
 }
 
 bool TimelineClip::solveAfresh(double previousSeconds, double seconds) const {
@@ -45,6 +243,20 @@ bool TimelineClip::solveAfresh(double previousSeconds, double seconds) const {
 }
 
 SignerPosture TimelineClip::postureAt(double seconds) const {
+    SignerPosture posture = straightPostureAt(seconds);
+    for (const Detour& detour : detours_) {
+        if (seconds <= detour.startSeconds || seconds >= detour.endSeconds) continue;
+        const double u = (seconds - detour.startSeconds) / (detour.endSeconds - detour.startSeconds);
+        for (const Bump& b : detour.bumps) {
+            posture.rightWrist->wristMm += bump(b.shape, u) * b.rightMm;
+            posture.leftWrist->wristMm += bump(b.shape, u) * b.leftMm;
+        }
+        break;
+    }
+    return posture;
+}
+
+SignerPosture TimelineClip::straightPostureAt(double seconds) const {
     SignerPosture posture;
     for (const hand::Side side : {hand::Side::Right, hand::Side::Left}) {
         const auto& track = side == hand::Side::Right ? timeline_.right : timeline_.left;

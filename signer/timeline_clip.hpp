@@ -3,8 +3,22 @@
 // timeline's hands and gaze and resolves them on the rig — a resting hand goes to the rig's
 // resting place, relaxed; a keyed hand to its wrist target and handshape; gaze toward the
 // viewer or a referent.
+//
+// Transitions are routed around the hands and the body. Between two items the timeline's
+// hands blend straight from one pose to the next (minimum jerk), and a straight blend knows
+// nothing of the hands' shape: fingers turning toward the resting place, or one hand passing
+// the other, would go through the other hand or the body. Where it would (signer/clearance.hpp
+// geometry, on the wrist targets), the wrists take a detour: each moving hand is pushed aside
+// by an offset times a bump that is 0, with zero velocity and acceleration, at both ends of the
+// transition, so the keys and the smoothness of the profile are kept. The detour keeps the
+// hands at least kTransitionClearanceMm apart, or as close as they are at the transition's
+// ends when an item there has them touching. A detour depends only on the keys at its ends,
+// so frames outside the verb slots stay the same in every version.
 #include "signer/verb_render.hpp"
 #include "stimuli/timeline.hpp"
+
+#include <optional>
+#include <vector>
 
 namespace signstim::signer {
 
@@ -20,10 +34,36 @@ public:
     const stimuli::Timeline& timeline() const { return timeline_; }
 
 private:
+    // A transition's detour: bumps of the wrists' paths, each of a shape (timeline_clip.cpp)
+    // and with the wrists' offsets at its peak (body frame, mm).
+    struct Bump {
+        int shape = 0;
+        glm::vec3 rightMm{0.0f}, leftMm{0.0f};
+    };
+    struct Detour {
+        double startSeconds = 0.0, endSeconds = 0.0;
+        std::vector<Bump> bumps;
+    };
+    // The arms frame after frame, as ClipPoser solves them (the previous frame's elbows).
+    struct ArmChain {
+        std::optional<PoseReport> previous;
+        double previousSeconds = 0.0;
+    };
+    SignerPosture straightPostureAt(double seconds) const;
+    PoseReport advance(ArmChain& chain, double seconds, const SignerPosture& posture) const;
+    Detour routeTransition(double startSeconds, double endSeconds, const ArmChain& chain) const;
+
     const SignerRig* rig_;
     const stimuli::HandshapeLibrary* shapes_;
     stimuli::Timeline timeline_;
+    std::vector<Detour> detours_;  // in time order
 };
+
+// [D] How far apart a transition keeps the hands (and each hand from the body).
+inline constexpr float kTransitionClearanceMm = 5.0f;
+// [D] Transitions are routed on the arms as drawn at this frame rate (the default output's);
+// at another rate the elbows, and so the hands where a wrist is at its limits, differ a little.
+inline constexpr double kRoutingFramesPerSecond = 30.0;
 
 // Where the eyes go for a referent at a signing-space point: toward it horizontally, a little
 // below eye level (a signer glances at the locus, not down at the chest), body frame.

@@ -104,6 +104,18 @@ SignerPosture VerbClip::postureAt(double seconds) const {
     return posture;
 }
 
+render::Pose ClipPoser::next(double seconds, SignerPosture* posture, PoseReport* report) {
+    if (previous_ && clip_->solveAfresh(previousSeconds_, seconds)) previous_.reset();
+    const SignerPosture wanted = clip_->postureAt(seconds);
+    PoseReport solved;
+    render::Pose pose = rig_->pose(wanted, &solved, previous_ ? &*previous_ : nullptr);
+    previous_ = solved;
+    previousSeconds_ = seconds;
+    if (posture) *posture = wanted;
+    if (report) *report = solved;
+    return pose;
+}
+
 std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const render::Scene& avatar,
                           const SignerRig& rig, const std::vector<const Clip*>& clips,
                           const std::vector<std::string>& labels, const ClipRenderOptions& options,
@@ -121,8 +133,8 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
     const render::Frame restFrame = postureFrame(avatar, rig, sceneHandle, SignerPosture{}, aspect);
     const render::Camera camera = restFrame.views.front().camera;
 
-    std::vector<PoseReport> previous(clips.size());
-    std::vector<bool> hasPrevious(clips.size(), false);
+    std::vector<ClipPoser> posers;
+    for (const Clip* clip : clips) posers.emplace_back(rig, *clip);
     const std::uint32_t inFlight = std::max(1u, renderer.framesInFlight());
     std::uint64_t submitted = 0, retrieved = 0;
     const auto retrieveOne = [&] {
@@ -139,16 +151,11 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
         frame.columns = options.columns;
         frame.rows = options.rows;
         for (std::size_t i = 0; i < clips.size(); ++i) {
-            if (f > 0 && clips[i]->solveAfresh(static_cast<double>(f - 1) / options.framesPerSecond, t))
-                hasPrevious[i] = false;
-            PoseReport report;
             render::View view;
             view.scene = sceneHandle;
-            view.pose = rig.pose(clips[i]->postureAt(t), &report, hasPrevious[i] ? &previous[i] : nullptr);
+            view.pose = posers[i].next(t);
             view.camera = camera;
             if (i < labels.size()) view.label = labels[i];
-            previous[i] = report;
-            hasPrevious[i] = true;
             frame.views.push_back(std::move(view));
         }
         if (submitted - retrieved >= inFlight) retrieveOne();
@@ -189,8 +196,8 @@ SharedRenderStats renderClipsSharingFrames(render::Renderer& renderer, int scene
     const float aspect = static_cast<float>(ro.width) / static_cast<float>(ro.height);
     const render::Camera camera = postureFrame(avatar, rig, sceneHandle, SignerPosture{}, aspect).views.front().camera;
 
-    std::vector<PoseReport> previous(clips.size());
-    std::vector<bool> hasPrevious(clips.size(), false);
+    std::vector<ClipPoser> posers;
+    for (const Clip* clip : clips) posers.emplace_back(rig, *clip);
     const std::uint32_t inFlight = std::max(1u, renderer.framesInFlight());
     // Which sink each submitted image goes to, in submission order: -1 for every sink.
     std::deque<int> targets;
@@ -240,11 +247,7 @@ SharedRenderStats renderClipsSharingFrames(render::Renderer& renderer, int scene
         const double t = static_cast<double>(f) / framesPerSecond;
         bool shared = true;
         for (std::size_t i = 0; i < clips.size(); ++i) {
-            if (f > 0 && clips[i]->solveAfresh(static_cast<double>(f - 1) / framesPerSecond, t)) hasPrevious[i] = false;
-            PoseReport report;
-            poses[i] = rig.pose(clips[i]->postureAt(t), &report, hasPrevious[i] ? &previous[i] : nullptr);
-            previous[i] = report;
-            hasPrevious[i] = true;
+            poses[i] = posers[i].next(t);
             shared = shared && (i == 0 || samePose(poses[i], poses[0]));
         }
         if (shared) {

@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,24 @@ private:
     const stimuli::HandshapeLibrary* shapes_;
     stimuli::VerbPerformance performance_;
     ClipTiming timing_;
+};
+
+// Poses a clip frame after frame as renderClips draws it: each frame's arms continue from the
+// previous frame's elbows (no flips between neighbours), except where the clip asks for a
+// fresh solve (Clip::solveAfresh). Anything that must see the frames the renderer draws (the
+// clearance check, signer/clearance.hpp) poses them with one too.
+class ClipPoser {
+public:
+    ClipPoser(const SignerRig& rig, const Clip& clip) : rig_(&rig), clip_(&clip) {}
+    // The pose at `seconds`; times increase from call to call. `posture` and `report`, when
+    // given, receive what was posed and the arm solution.
+    render::Pose next(double seconds, SignerPosture* posture = nullptr, PoseReport* report = nullptr);
+
+private:
+    const SignerRig* rig_;
+    const Clip* clip_;
+    std::optional<PoseReport> previous_;
+    double previousSeconds_ = 0.0;
 };
 
 // Hand pose of the signing-space frame (SPEC §3.1) -> arm target in the body frame.

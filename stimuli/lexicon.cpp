@@ -73,10 +73,12 @@ public:
                 source_.fail(anchors, pointer + "/gloss", "'" + sign.gloss + "' is not a sign gloss (capitals, digits, inner hyphens)");
             if (lexicon_.find(sign.gloss)) source_.fail(anchors, pointer + "/gloss", sign.gloss + " is defined twice");
             for (const auto& [key, value] : item.items())
-                if (key != "gloss" && key != "meaning" && key != "hands" && key != "passes" && key != "keyframes" && key != "notes")
+                if (key != "gloss" && key != "meaning" && key != "hands" && key != "passes" && key != "keyframes" &&
+                    key != "notes" && key != "contact")
                     source_.fail(anchors, pointer + "/" + key,
-                                 "unknown field '" + key + "' (known: gloss, meaning, hands, passes, keyframes, notes)");
+                                 "unknown field '" + key + "' (known: gloss, meaning, hands, passes, contact, keyframes, notes)");
             sign.meaning = item.value("meaning", "");
+            sign.contact = readSignContact(source_, item, anchors, pointer);
             readHands(item, sign, anchors, pointer);
             if (item.contains("passes")) {
                 if (!item["passes"].is_number_integer() || item["passes"].get<long long>() < 1 || item["passes"].get<long long>() > 8)

@@ -26,6 +26,7 @@ struct LexiconSign {
     std::string meaning;  // "the day before today"
     std::vector<HandSide> hands;  // the right (dominant) hand first
     int passes = 1;               // the keyframe path played forth and back this many times
+    SignContact contact;          // what the citation form touches on purpose
     // keyframes[hand][k]: positions already resolved to the palm frame's origin.
     std::vector<std::vector<VerbKeyframe>> keyframes;
     int line = 0;

@@ -25,6 +25,7 @@ constexpr int kRight = 0, kLeft = 1;
 struct Segment {
     std::array<std::vector<TimelineKey>, 2> hands;  // empty: the hand rests throughout
     double durationSeconds = 0.0;
+    SignContact contact;
 };
 
 struct HandState {
@@ -158,15 +159,15 @@ private:
         const double end = start + segment.durationSeconds;
         const bool continuesSlot = verbSlotOpen_ && (kind == SpanKind::Hold || kind == SpanKind::Rest) && !isVerb;
         if (isVerb) {
-            timeline_.spans.push_back({SpanKind::Verb, now_, end, label, sentence, item});
+            timeline_.spans.push_back({SpanKind::Verb, now_, end, label, sentence, item, start, end, segment.contact});
         } else if (verbSlotOpen_) {
             // The slot runs to this item's first key (the fixed transition out is inside it);
             // a HOLD or the return to rest that follows a verb stays inside it (the hands hold
             // or leave the verb's end pose).
             timeline_.spans.back().endSeconds = continuesSlot ? end : start;
-            if (!continuesSlot) timeline_.spans.push_back({kind, start, end, label, sentence, item});
+            if (!continuesSlot) timeline_.spans.push_back({kind, start, end, label, sentence, item, start, end, segment.contact});
         } else {
-            timeline_.spans.push_back({kind, now_, end, label, sentence, item});
+            timeline_.spans.push_back({kind, now_, end, label, sentence, item, start, end, segment.contact});
         }
         if (continuesSlot) {
             gaze(end, timeline_.gaze.back().targetMm);  // still on the verb's object
@@ -186,7 +187,7 @@ private:
             k.timeSeconds = now_ + seconds;
             track(h).push_back(k);
         }
-        timeline_.spans.push_back({kind, now_, now_ + seconds, label, sentence, item});
+        timeline_.spans.push_back({kind, now_, now_ + seconds, label, sentence, item, now_, now_ + seconds, {}});
         gaze(now_ + seconds, timeline_.gaze.empty() ? std::nullopt : timeline_.gaze.back().targetMm);
         now_ += seconds;
     }
@@ -226,9 +227,14 @@ private:
                 for (int h : {kRight, kLeft})
                     if (hold.hands[h].empty()) track(h).push_back(restKey(now_ + seconds));
                 if (slot) {
+                    // The hands hold the verb's end pose: part of the verb's own keys.
                     timeline_.spans.back().endSeconds = now_ + seconds;
+                    timeline_.spans.back().keysEndSeconds = now_ + seconds;
                 } else {
-                    timeline_.spans.push_back({SpanKind::Hold, now_, now_ + seconds, "HOLD", sentence, index});
+                    // The hands hold the previous item's last pose, and whatever it touches.
+                    const SignContact held = timeline_.spans.empty() ? SignContact{} : timeline_.spans.back().contact;
+                    timeline_.spans.push_back({SpanKind::Hold, now_, now_ + seconds, "HOLD", sentence, index, now_,
+                                               now_ + seconds, held});
                 }
                 gaze(now_ + seconds, timeline_.gaze.back().targetMm);
                 now_ += seconds;
@@ -244,6 +250,7 @@ private:
             throw InputError(story_.file, item.line, item.column, "",
                              "the lexicon (" + sources_.lexicon->file + ") has no sign " + gloss);
         Segment segment;
+        segment.contact = sign->contact;
         for (std::size_t h = 0; h < sign->hands.size(); ++h) {
             const int slot = sign->hands[h] == HandSide::Right ? kRight : kLeft;
             segment.hands[slot] = expandPasses(sign->keyframes[h], sign->passes, options_.rate);
@@ -254,8 +261,14 @@ private:
 
     Segment pointingSegment(double position) const {
         const glm::dvec3 target = arcPoint(position);
-        const glm::dvec3 direction = glm::normalize(target - kRightShoulderMm);
-        const glm::dvec3 hand = kRightShoulderMm + options_.pointingReachMm * direction;
+        glm::dvec3 direction = glm::normalize(target - kRightShoulderMm);
+        glm::dvec3 hand = kRightShoulderMm + options_.pointingReachMm * direction;
+        // Toward a referent on the left the reach from the right shoulder crosses the chest:
+        // the hand stays in front of it there and points from where it is.
+        if (hand.x < kRightShoulderMm.x && hand.z < options_.pointingMinimumForwardMm) {
+            hand.z = options_.pointingMinimumForwardMm;
+            direction = glm::normalize(target - hand);
+        }
         // Index along the pointing direction, palm turned down (toward -y), as IX is signed.
         const glm::dquat orientation = orientationOf(direction, glm::dvec3(0.0, -1.0, 0.0));
         const HandPose pose = poseAt(hand, orientation);
@@ -327,6 +340,7 @@ private:
         }
         Segment segment;
         segment.durationSeconds = longest;
+        segment.contact = mine.contact;
         for (const HandTrack& trackOfHand : mine.hands) {
             const int h = trackOfHand.side == HandSide::Right ? kRight : kLeft;
             for (const PerformanceKeyframe& k : trackOfHand.keyframes)

@@ -49,6 +49,12 @@ struct TimelineSpan {
     std::string label;        // "ASK", "IX(0.9)", "fs-JOHN"
     int sentence = -1;        // 0-based; -1 for the rest at the start and the end
     int item = -1;            // 0-based within the sentence
+    // The item's own keys (a verb's: its keys and the hold that pads it to the slot's length,
+    // and a HOLD that follows it): the transition into the item ends at keysStartSeconds, the
+    // one out of it starts at keysEndSeconds. A frame outside every span's keys is in a
+    // transition (or at rest after a verb, inside its slot).
+    double keysStartSeconds = 0.0, keysEndSeconds = 0.0;
+    SignContact contact;  // what the sign or verb touches on purpose (the lexicon's, verbs.json's)
 };
 
 struct Timeline {
@@ -82,6 +88,9 @@ struct TimelineOptions {
     glm::dvec3 fingerspellingMm{150.0, 170.0, 230.0};
     // How far the index of IX reaches toward the referent, from the right shoulder [D].
     double pointingReachMm = 330.0;
+    // ... but no nearer the chest than this (forward, z) where the hand is in front of it [D:
+    // the default signer's chest is ~110 mm deep; the fist needs the rest].
+    double pointingMinimumForwardMm = 200.0;
 };
 
 // Gives a verb instance in the requested version (point/vector need trained models,

@@ -78,6 +78,7 @@ VerbPerformance performanceFromPoses(const VerbDefinition& verb, VerbVersion ver
     VerbPerformance performance;
     performance.verb = verb.name;
     performance.version = version;
+    performance.contact = verb.contact;
     performance.subject = verb.objectOnly() ? 0.0 : subject;
     performance.object = object;
     const std::size_t keyframes = verb.keyframeCount();
@@ -272,6 +273,7 @@ VerbPerformance parseAnimatorPerformance(const JsonSource& source, const VerbDef
     VerbPerformance performance;
     performance.verb = verb.name;
     performance.version = VerbVersion::Animator;
+    performance.contact = verb.contact;
     performance.subject = verb.objectOnly() ? 0.0 : subject;
     performance.object = object;
     performance.handshapeFile = source.file;

@@ -46,6 +46,7 @@ struct VerbPerformance {
     double durationSeconds = 0.0;
     std::vector<HandTrack> hands;  // right first
     std::string handshapeFile;     // the verbs file or the animator file the handshapes come from
+    SignContact contact;           // the verb's (every version touches as its citation form does)
 
     const HandTrack* hand(HandSide side) const;
 };

@@ -109,6 +109,24 @@ glm::dquat readOrientation(const JsonSource& source, const nlohmann::json& objec
     return fromQuaternion ? *fromQuaternion : *fromDirections;
 }
 
+SignContact readSignContact(const JsonSource& source, const nlohmann::json& object,
+                            const std::vector<std::string>& anchors, const std::string& pointer) {
+    SignContact contact;
+    if (!object.is_object() || !object.contains("contact")) return contact;
+    std::vector<std::string> at = anchors;
+    at.push_back("\"contact\"");
+    const nlohmann::json& list = object["contact"];
+    const std::string expected = "expected a list of what the sign touches on purpose: [\"hands\"], [\"body\"] or [\"hands\", \"body\"]";
+    if (!list.is_array() || list.empty()) source.fail(at, pointer + "/contact", expected);
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string what = list[i].is_string() ? list[i].get<std::string>() : std::string();
+        bool& flag = what == "hands" ? contact.hands : contact.body;
+        if ((what != "hands" && what != "body") || flag) source.fail(at, pointer + "/contact/" + std::to_string(i), expected);
+        flag = true;
+    }
+    return contact;
+}
+
 namespace {
 
 const nlohmann::json& member(const JsonSource& source, const nlohmann::json& object, const std::string& key,
@@ -174,6 +192,7 @@ VerbLibrary parseVerbLibrary(const JsonSource& source) {
                 source.fail({"\"" + verb.name + "\"", "\"passes\""}, pointer + "/passes", "expected an integer 1..20");
             verb.passes = passes.get<int>();
         }
+        verb.contact = readSignContact(source, item, anchors, pointer);
         const nlohmann::json& citation = member(source, item, "citation", anchors, pointer);
         for (HandSide side : verb.hands) {
             const std::string handName = toString(side);

@@ -28,6 +28,14 @@ struct HandPose {
     glm::dquat orientation{1.0, 0.0, 0.0, 0.0};
 };
 
+// What a sign's citation form touches on purpose ("contact" in scenes/verbs.json and the
+// lexicon): the clearance check (signer/clearance.hpp) lets the hands touch each other, or a
+// hand the body, only inside such a sign.
+struct SignContact {
+    bool hands = false;  // the hands touch each other (HELP's fist on the palm, COPY)
+    bool body = false;   // a hand touches the body or the head (MY, THANK-YOU, TELL)
+};
+
 struct VerbKeyframe {
     double timeSeconds = 0.0;  // from the start of the verb
     HandPose pose;
@@ -44,6 +52,7 @@ struct VerbDefinition {
     std::vector<HandSide> hands;  // the right (dominant) hand first
     // The keyframe path is played forth and back this many times in all (SCOLD wags: 3).
     int passes = 1;
+    SignContact contact;
     // citation[hand][keyframe]; every hand has the same keyframe times.
     std::vector<std::vector<VerbKeyframe>> citation;
 
@@ -84,5 +93,10 @@ glm::dvec3 readVector3(const JsonSource& source, const nlohmann::json& value,
 // within 1°.
 glm::dquat readOrientation(const JsonSource& source, const nlohmann::json& object,
                            const std::vector<std::string>& anchors, const std::string& field);
+
+// The optional "contact" of a verb or sign `object`: an array of "hands" and "body" (nothing
+// when absent). `pointer` is the JSON pointer of `object`.
+SignContact readSignContact(const JsonSource& source, const nlohmann::json& object,
+                            const std::vector<std::string>& anchors, const std::string& pointer);
 
 }  // namespace signstim::stimuli

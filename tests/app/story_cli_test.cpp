@@ -37,6 +37,10 @@ TEST(StoryCli, CheckSaysOkForTheExampleAndNamesLineAndColumnOfAnUnknownSign) {
     const auto ok = runSignstim("story " + shellQuote(kExample) + " --check --scenes " + shellQuote(kScenes));
     EXPECT_EQ(ok.status, 0) << ok.output;
     EXPECT_NE(ok.output.find("ok: \"The question"), std::string::npos) << ok.output;
+    // Then how close the hands come in each version, and no warning: they keep clear.
+    EXPECT_NE(ok.output.find("closest approach of the hands"), std::string::npos) << ok.output;
+    EXPECT_NE(ok.output.find("uninflected: at transitions"), std::string::npos) << ok.output;
+    EXPECT_EQ(ok.output.find("warning:"), std::string::npos) << ok.output;
 
     const fs::path dir = freshDir("check");
     std::string text = readFile(kExample);

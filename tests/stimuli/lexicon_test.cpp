@@ -116,6 +116,9 @@ TEST(Lexicon, EachMistakeNamesFileLineAndField) {
         {lexiconText(bothPlaces), 11, "/signs/0/keyframes/right/0", "either"},
         {lexiconText(farAway), 12, "/signs/0/keyframes/right/1/offset", "at most 400 mm"},
         {lexiconText(kGoodKeys, " \"passes\": 0,"), 9, "/signs/0/passes", "1 to 8"},
+        {lexiconText(kGoodKeys, " \"contact\": [\"hand\"],"), 9, "/signs/0/contact/0", "[\"hands\", \"body\"]"},
+        {lexiconText(kGoodKeys, " \"contact\": \"body\","), 9, "/signs/0/contact", "touches on purpose"},
+        {lexiconText(kGoodKeys, " \"contact\": [\"body\", \"body\"],"), 9, "/signs/0/contact/1", "touches on purpose"},
     };
     for (const Case& c : cases) {
         const InputError e = errorOf(c.text);
@@ -127,6 +130,17 @@ TEST(Lexicon, EachMistakeNamesFileLineAndField) {
     std::string wrongFormat = lexiconText(kGoodKeys);
     wrongFormat.replace(wrongFormat.find("signstim-lexicon"), 16, "signstim-verbs");
     EXPECT_EQ(errorOf(wrongFormat).line(), 2);
+}
+
+TEST(Lexicon, ASignSaysWhatItsCitationFormTouches) {
+    // THANK-YOU touches the chin: the clearance check lets the hand touch the body there.
+    const Lexicon touching = parse(lexiconText(kGoodKeys, " \"contact\": [\"body\"],"));
+    EXPECT_TRUE(touching.signs.front().contact.body);
+    EXPECT_FALSE(touching.signs.front().contact.hands);
+    const Lexicon both = parse(lexiconText(kGoodKeys, " \"contact\": [\"hands\", \"body\"],"));
+    EXPECT_TRUE(both.signs.front().contact.hands && both.signs.front().contact.body);
+    const Lexicon none = parse(lexiconText(kGoodKeys));
+    EXPECT_FALSE(none.signs.front().contact.hands || none.signs.front().contact.body);
 }
 
 }  // namespace

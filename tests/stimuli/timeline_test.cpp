@@ -10,6 +10,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -30,7 +31,7 @@ struct World {
     {"gloss": "MY", "hands": ["right"], "keyframes": {"right": [
       {"time": 0, "at": "chest", "offset": [0, 0, 60], "touch": "palm", "fingers": [-0.3, 1, 0], "palm": [0, 0, -1], "handshape": "B"},
       {"time": 0.25, "at": "chest", "touch": "palm", "fingers": [-0.3, 1, 0], "palm": [0, 0, -1], "handshape": "B"}]}},
-    {"gloss": "HELP", "hands": ["right", "left"], "keyframes": {
+    {"gloss": "HELP", "hands": ["right", "left"], "contact": ["hands"], "keyframes": {
       "right": [
         {"time": 0, "position": [0, -100, 300], "fingers": [0, 0, 1], "palm": [-1, 0, 0], "handshape": "A"},
         {"time": 0.4, "position": [0, 20, 300], "fingers": [0, 0, 1], "palm": [-1, 0, 0], "handshape": "A"}],
@@ -144,6 +145,70 @@ TEST(Timeline, StartsAndEndsAtRestWithTimesIncreasing) {
         for (std::size_t i = 1; i < track->size(); ++i) EXPECT_GE((*track)[i].timeSeconds, (*track)[i - 1].timeSeconds);
     }
     for (std::size_t i = 1; i < t.gaze.size(); ++i) EXPECT_GT(t.gaze[i].timeSeconds, t.gaze[i - 1].timeSeconds);
+}
+
+TEST(Timeline, SpansNameTheirItemsOwnKeysAndWhatTheyTouch) {
+    // Each span's own keys lie within it, both hands have keys where they begin and end (the
+    // transitions lie between), and a sign or verb carries its "contact".
+    for (VerbVersion v : kVersions) {
+        const Timeline t = buildTimeline(world().story, v, world().sources());
+        bool sawHelp = false, sawTell = false;
+        for (const TimelineSpan& span : t.spans) {
+            EXPECT_LE(span.startSeconds, span.keysStartSeconds) << span.label;
+            EXPECT_LE(span.keysStartSeconds, span.keysEndSeconds) << span.label;
+            EXPECT_LE(span.keysEndSeconds, span.endSeconds + 1e-12) << span.label;
+            for (const auto* track : {&t.right, &t.left}) {
+                const auto hasKeyAt = [&](double s) {
+                    return std::any_of(track->begin(), track->end(), [&](const TimelineKey& k) { return k.timeSeconds == s; });
+                };
+                EXPECT_TRUE(hasKeyAt(span.keysStartSeconds)) << span.label;
+                EXPECT_TRUE(hasKeyAt(span.keysEndSeconds)) << span.label;
+            }
+            if (span.label == "HELP") {
+                sawHelp = true;
+                EXPECT_TRUE(span.contact.hands);
+                EXPECT_FALSE(span.contact.body);
+            }
+            if (span.label == "TELL") {
+                sawTell = true;
+                EXPECT_TRUE(span.contact.body);  // scenes/verbs.json: from the mouth
+            }
+            if (span.label == "MY" || span.kind == SpanKind::Pointing) {
+                EXPECT_FALSE(span.contact.hands || span.contact.body) << span.label;
+            }
+        }
+        EXPECT_TRUE(sawHelp && sawTell);
+    }
+}
+
+TEST(Timeline, PointingAcrossTheChestStaysInFrontOfItAndAimsAtTheReferent) {
+    // IX toward the far left: reached from the right shoulder, the hand would be inside the
+    // chest; it stays in front and the index still aims at the referent. IX toward the far
+    // right keeps the plain reach.
+    const Timeline t = buildTimeline(world().story, VerbVersion::Point, world().sources());
+    const TimelineOptions options;
+    bool left = false, right = false;
+    for (const TimelineSpan& span : t.spans) {
+        if (span.kind != SpanKind::Pointing) continue;
+        const TimelineSample s = sampleTrack(t.right, 0.5 * (span.keysStartSeconds + span.keysEndSeconds));
+        const HandPose& pose = s.from->pose;
+        // In front of the chest (the default signer's is 340 mm wide), not in it.
+        if (pose.positionMm.x < 170.0) {
+            EXPECT_GE(pose.positionMm.z, options.pointingMinimumForwardMm - 1e-9);
+        }
+        // Which referent: the closest arc point to the index's line.
+        const glm::dvec3 fingers = fingersDirection(pose.orientation);
+        double best = 1e9, position = 0.0;
+        for (double p = -1.0; p <= 1.0; p += 0.01) {
+            const glm::dvec3 to = arcPoint(p) - pose.positionMm;
+            const double miss = glm::length(to - glm::dot(to, fingers) * fingers);
+            if (miss < best) best = miss, position = p;
+        }
+        EXPECT_LT(best, 1.0) << span.label;
+        left = left || position < -0.5;
+        right = right || position > 0.5;
+    }
+    EXPECT_TRUE(left && right);
 }
 
 // Position of a non-resting sample; the rest place is the signer's, so samples touching rest

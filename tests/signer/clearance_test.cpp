@@ -1,0 +1,258 @@
+// The hands keep clear of each other and of the body (signer/clearance.hpp): the capsules
+// follow the drawn hands, transitions are routed around the hands, and every frame of the
+// twelve default stories in the four versions keeps the rules — the hands touch, each other
+// or the body, only inside signs whose citation form touches, and a transition never takes
+// them deeper than the items at its ends.
+#include "signer/clearance.hpp"
+#include "signer/timeline_clip.hpp"
+#include "signer/verb_render.hpp"
+#include "stimuli/lexicon.hpp"
+#include "stimuli/sora.hpp"
+#include "stimuli/story.hpp"
+#include "stimuli/timeline.hpp"
+#include "stimuli/verb_models.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace signstim;
+
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR) / "scenes";
+const std::vector<stimuli::VerbVersion> kVersions{stimuli::VerbVersion::Point, stimuli::VerbVersion::Vector,
+                                                  stimuli::VerbVersion::Animator, stimuli::VerbVersion::Uninflected};
+
+// What `signstim story` builds a story from: the default signer (scenes/avatar/signer.glb),
+// the handshapes, verbs, trained models and lexicon of scenes/.
+struct World {
+    signer::Signer signer{kScenes};
+    stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(kScenes / "verbs.json");
+    stimuli::TrainedVerbModels models = stimuli::loadVerbModels(kScenes / "models" / "verb_models.json", verbs);
+    stimuli::Lexicon lexicon = stimuli::loadLexicon(kScenes / "lexicon", signer.shapes(), signer.rig().handModel());
+
+    stimuli::TimelineSources sources() const {
+        stimuli::TimelineSources s;
+        s.lexicon = &lexicon;
+        s.shapes = &signer.shapes();
+        s.verbs = [this](const std::string& verb, stimuli::VerbVersion version, double subject, double object, int, int) {
+            return stimuli::synthesizeVerb(stimuli::VerbSources{&verbs, &models, kScenes / "animator", &signer.shapes()},
+                                           verb, version, subject, object);
+        };
+        return s;
+    }
+    stimuli::Story story(const std::filesystem::path& file) const {
+        stimuli::StoryVocabulary vocabulary;
+        vocabulary.verbs = &verbs;
+        vocabulary.signs = lexicon.glosses();
+        return stimuli::loadStory(file, vocabulary);
+    }
+};
+const World& world() {
+    static const World w;
+    return w;
+}
+
+stimuli::TimelineKey key(double t, const glm::dvec3& positionMm, const glm::dvec3& fingers, const glm::dvec3& palm,
+                         const std::string& shape) {
+    stimuli::TimelineKey k;
+    k.timeSeconds = t;
+    k.pose.positionMm = positionMm;
+    k.pose.orientation = stimuli::orientationFromFingersPalm(fingers, palm);
+    k.handshape = shape;
+    return k;
+}
+
+}  // namespace
+
+TEST(Clearance, HandCapsulesFollowThePosedSkeleton) {
+    // Bent fingers and a turned hand on the right, the relaxed hand on the left: each bone's
+    // capsule starts where the posed avatar has that bone's joint.
+    const World& w = world();
+    const signer::SignerRig& rig = w.signer.rig();
+    const render::Scene& scene = w.signer.avatar();
+    signer::SignerPosture posture;
+    posture.rightHand = w.signer.shapes().at("X").controls;
+    posture.leftHand = signer::relaxedHand();
+    posture.rightWrist = hand::ArmTarget{{-60.0f, -50.0f, 300.0f}, glm::angleAxis(0.7f, glm::normalize(glm::vec3(1, 2, 3)))};
+    posture.leftWrist = hand::ArmTarget{{120.0f, -80.0f, 260.0f}, glm::angleAxis(-1.1f, glm::normalize(glm::vec3(2, -1, 1)))};
+    signer::PoseReport report;
+    const render::Pose pose = rig.pose(posture, &report);
+    std::vector<glm::mat4> world;
+    render::computeWorldTransforms(scene, pose, world);
+    const signer::SignerCapsules capsules = signer::signerCapsules(rig, posture, report);
+    for (const hand::Side side : {hand::Side::Right, hand::Side::Left}) {
+        const std::vector<hand::Capsule>& hand = side == hand::Side::Right ? capsules.right : capsules.left;
+        ASSERT_EQ(hand.size(), 19u);  // 15 digit bones, 4 palm capsules
+        const auto bones = hand::handBones(side);
+        for (int body = 1; body < hand::kBodyCount; ++body) {
+            const glm::vec3 joint = glm::vec3(world[static_cast<std::size_t>(scene.findNode(std::string(bones[body].name)))][3]);
+            const glm::vec3 capsuleStart = rig.worldFromBodyMm(hand[static_cast<std::size_t>(body - 1)].start);
+            EXPECT_LT(glm::distance(joint, capsuleStart) * 1000.0f, 0.5f) << bones[body].name;
+        }
+    }
+}
+
+TEST(Clearance, ClosestApproachIsTheSmallestSurfaceGap) {
+    // Two parallel finger capsules 30 mm apart (radii 10 and 8) touch at 12 mm; a far capsule
+    // in the same set does not hide the near one.
+    const std::vector<hand::Capsule> first{{{0, 0, 0}, {0, 0, 50}, 10.0f}};
+    const std::vector<hand::Capsule> second{{{500, 0, 0}, {500, 0, 50}, 8.0f}, {{30, 0, 10}, {30, 0, 60}, 8.0f}};
+    const signer::Approach a = signer::closestApproach(first, second);
+    EXPECT_NEAR(a.gapMm, 12.0f, 1e-4f);
+    EXPECT_NEAR(a.onFirst.x, 0.0f, 1e-4f);
+    EXPECT_NEAR(a.onSecond.x, 30.0f, 1e-4f);
+    // Crossing capsules interpenetrate by the sum of their radii.
+    const std::vector<hand::Capsule> crossing{{{-40, 0, 25}, {40, 0, 25}, 8.0f}};
+    EXPECT_NEAR(signer::closestApproach(first, crossing).gapMm, -18.0f, 1e-4f);
+}
+
+TEST(Clearance, TransitionsDetourAroundTheOtherHandAndKeepTheirKeys) {
+    // The right hand crosses from the signer's left to the right while the left hand holds
+    // still across its straight path: the transition goes around the left hand, and the
+    // keys, and the stops at them, stay as they are.
+    const World& w = world();
+    const signer::SignerRig& rig = w.signer.rig();
+    stimuli::Timeline timeline;
+    timeline.story = "crossing";
+    timeline.version = "test";
+    timeline.durationSeconds = 1.4;
+    const glm::dvec3 forward(0, 0, 1), down(0, -1, 0), right(1, 0, 0);
+    const auto rightAt = [&](double t, double x) { return key(t, {x, -40, 300}, forward, down, "B"); };
+    timeline.right = {rightAt(0.0, -170), rightAt(0.4, -170), rightAt(1.0, 170), rightAt(1.4, 170)};
+    for (double t : {0.0, 0.4, 1.0, 1.4}) timeline.left.push_back(key(t, {-10, -40, 330}, forward, right, "1"));
+    timeline.spans = {{stimuli::SpanKind::Sign, 0.0, 0.4, "A", 0, 0, 0.0, 0.4, {}},
+                      {stimuli::SpanKind::Sign, 0.4, 1.4, "B", 0, 1, 1.0, 1.4, {}}};
+    timeline.gaze = {{0.0, std::nullopt}, {1.4, std::nullopt}};
+    const signer::TimelineClip clip(rig, w.signer.shapes(), timeline);
+
+    // The straight blend would go through the left hand.
+    signer::SignerPosture straight = clip.postureAt(0.7);
+    straight.rightWrist = signer::blendTargets(signer::armTargetFromSigningSpace(timeline.right[1].pose),
+                                               signer::armTargetFromSigningSpace(timeline.right[2].pose),
+                                               static_cast<float>(stimuli::minimumJerk(0.5)));
+    std::vector<hand::Capsule> rightHand, leftHand;
+    signer::handCapsules(rig, hand::Side::Right, straight.rightHand, straight.rightWrist->wristMm,
+                         straight.rightWrist->handRotation, rightHand);
+    signer::handCapsules(rig, hand::Side::Left, straight.leftHand, straight.leftWrist->wristMm,
+                         straight.leftWrist->handRotation, leftHand);
+    ASSERT_LT(signer::closestApproach(rightHand, leftHand).gapMm, -20.0f);
+
+    // The routed one does not.
+    for (const signer::ClearanceFrame& frame : signer::clearanceFrames(rig, clip))
+        EXPECT_GE(frame.clearance.hands.gapMm, signer::kTransitionClearanceMm - signer::kClearanceToleranceMm)
+            << "at " << frame.seconds << " s";
+    const float detourMm = glm::distance(clip.postureAt(0.7).rightWrist->wristMm, straight.rightWrist->wristMm);
+    EXPECT_GT(detourMm, 20.0f);
+    // The keys hold, and the hand leaves and reaches them at rest: 5 ms after the key it has
+    // moved only as far as the minimum-jerk profile takes it (10u³ of the way).
+    for (double t : {0.4, 1.0}) {
+        const glm::vec3 atKey = signer::armTargetFromSigningSpace(t < 0.5 ? timeline.right[1].pose : timeline.right[2].pose).wristMm;
+        EXPECT_LT(glm::distance(clip.postureAt(t).rightWrist->wristMm, atKey), 1e-3f) << t;
+        const double near = t < 0.5 ? t + 0.005 : t - 0.005;
+        EXPECT_LT(glm::distance(clip.postureAt(near).rightWrist->wristMm, atKey), 0.5f) << near;
+    }
+}
+
+TEST(Clearance, RoutedFramesOutsideTheVerbSlotsAreTheSameInEveryVersion) {
+    // A detour depends only on the keys at its ends and on where the arms are, and the arms
+    // are solved afresh after every verb slot: so the frames a study renders once stay shared.
+    const World& w = world();
+    const stimuli::Story story = w.story(kScenes / "stories" / "story-01.json");
+    std::vector<signer::TimelineClip> clips;
+    for (stimuli::VerbVersion v : kVersions)
+        clips.emplace_back(w.signer.rig(), w.signer.shapes(), stimuli::buildTimeline(story, v, w.sources()));
+    const stimuli::Timeline& first = clips.front().timeline();
+    int compared = 0;
+    for (int frame = 0; frame / 30.0 <= first.durationSeconds; ++frame) {
+        const double t = frame / 30.0;
+        bool inSlot = false;
+        for (const stimuli::TimelineSpan& span : first.spans)
+            inSlot = inSlot || (span.kind == stimuli::SpanKind::Verb && t > span.startSeconds - 1e-9 && t < span.endSeconds + 1e-9);
+        if (inSlot) continue;
+        const signer::SignerPosture a = clips.front().postureAt(t);
+        for (const signer::TimelineClip& other : clips) {
+            const signer::SignerPosture b = other.postureAt(t);
+            EXPECT_EQ(a.rightWrist->wristMm, b.rightWrist->wristMm) << other.timeline().version << " at " << t;
+            EXPECT_EQ(a.leftWrist->wristMm, b.leftWrist->wristMm) << other.timeline().version << " at " << t;
+            EXPECT_EQ(a.rightWrist->handRotation, b.rightWrist->handRotation) << other.timeline().version << " at " << t;
+            EXPECT_EQ(a.leftWrist->handRotation, b.leftWrist->handRotation) << other.timeline().version << " at " << t;
+        }
+        ++compared;
+    }
+    EXPECT_GT(compared, 300);
+}
+
+// Each default story in the four versions, every frame at 30 fps as `signstim story` renders it.
+class StoryClearance : public testing::TestWithParam<int> {
+protected:
+    struct Checked {
+        stimuli::Timeline timeline;
+        signer::ClearanceSummary summary;
+    };
+    static std::vector<Checked> check(int story) {
+        const World& w = world();
+        char name[32];
+        std::snprintf(name, sizeof name, "story-%02d.json", story);
+        const stimuli::Story parsed = w.story(kScenes / "stories" / name);
+        std::vector<Checked> out;
+        for (stimuli::VerbVersion v : kVersions) {
+            const signer::TimelineClip clip(w.signer.rig(), w.signer.shapes(), stimuli::buildTimeline(parsed, v, w.sources()));
+            const signer::ClearanceSummary summary =
+                signer::checkClearance(clip.timeline(), signer::clearanceFrames(w.signer.rig(), clip));
+            // The closest approaches, for the record (ctest -V).
+            const auto show = [&](const signer::ClearanceExtreme& e) {
+                char text[160];
+                std::snprintf(text, sizeof text, "%6.1f mm (%s, %.2f s)", e.gapMm,
+                              signer::describeClearancePlace(clip.timeline(), e.before, e.after).c_str(), e.seconds);
+                return std::string(text);
+            };
+            std::printf("%s %-11s hands: at transitions %s, in signs %s, touching %s; hand-body: %s, touching %s\n",
+                        name, stimuli::toString(v).c_str(), show(summary.handsAtTransitions).c_str(),
+                        show(summary.handsInSigns).c_str(), show(summary.handsInContactSigns).c_str(),
+                        show(summary.body).c_str(), show(summary.bodyInContactSigns).c_str());
+            out.push_back({clip.timeline(), summary});
+        }
+        return out;
+    }
+    // The violations that `select` picks, one line each.
+    template <typename Select>
+    static std::string violations(const std::vector<Checked>& checked, Select select) {
+        std::string text;
+        for (const Checked& c : checked)
+            for (const signer::ClearanceViolation& v : c.summary.violations) {
+                if (!select(v)) continue;
+                char line[200];
+                std::snprintf(line, sizeof line, "\n  %s %s: %s %.1f mm apart at %.2f s (at least %.1f allowed)",
+                              c.timeline.version.c_str(), signer::describeClearancePlace(c.timeline, v.before, v.after).c_str(),
+                              v.hands ? "hands" : "hand and body", v.gapMm, v.seconds, v.allowedMm);
+                text += line;
+            }
+        return text;
+    }
+};
+
+TEST_P(StoryClearance, HandsNeverInterpenetrateAtTransitions) {
+    // Neither each other nor the body, deeper than the items at the transition's ends have
+    // them (the issue: "no interpenetration of the hands at transitions").
+    const std::string found = violations(check(GetParam()), [](const signer::ClearanceViolation& v) { return v.transition; });
+    EXPECT_TRUE(found.empty()) << found;
+}
+
+TEST_P(StoryClearance, HandsTouchOnlyInSignsThatTouch) {
+    // Inside an item's own keys the hands touch each other, or a hand the body, only where
+    // the lexicon or verbs.json says the citation form does ("contact").
+    const std::string found = violations(check(GetParam()), [](const signer::ClearanceViolation& v) { return !v.transition; });
+    EXPECT_TRUE(found.empty()) << found;
+}
+
+INSTANTIATE_TEST_SUITE_P(DefaultStories, StoryClearance, testing::Range(1, 13),
+                         [](const testing::TestParamInfo<int>& info) {
+                             char name[16];
+                             std::snprintf(name, sizeof name, "story%02d", info.param);
+                             return std::string(name);
+                         });
