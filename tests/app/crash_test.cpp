@@ -19,23 +19,14 @@ namespace {
 
 namespace fs = std::filesystem;
 using signstim::test::runShell;
+using signstim::test::readFile;
 using signstim::test::shellQuote;
 
 constexpr int kTrials = 20;
 const std::string kScenes = fs::path(SIGNSTIM_SOURCE_DIR).append("scenes").string();
 
 fs::path freshDir(const std::string& name) {
-    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "crash_test" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    return signstim::test::freshDir(SIGNSTIM_BINARY_DIR, "crash_test", name, true);
 }
 
 std::string signstim() { return shellQuote((fs::path(SIGNSTIM_BINARY_DIR) / "signstim").string()); }

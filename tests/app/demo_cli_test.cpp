@@ -15,22 +15,13 @@ namespace {
 
 namespace fs = std::filesystem;
 using signstim::test::runSignstim;
+using signstim::test::readFile;
 using signstim::test::shellQuote;
 
 const std::string kScenes = fs::path(SIGNSTIM_SOURCE_DIR).append("scenes").string();
 
 fs::path freshDir(const std::string& name) {
-    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "demo_cli_test" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir.parent_path());
-    return dir;
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    return signstim::test::freshDir(SIGNSTIM_BINARY_DIR, "demo_cli_test", name, false);
 }
 
 signstim::test::CommandResult demo(const fs::path& out, const std::string& extra = "") {

@@ -1,5 +1,8 @@
 #include "tests/app/run_command.hpp"
 
+#include <fstream>
+#include <sstream>
+
 #include <sys/wait.h>
 
 #include <array>
@@ -29,6 +32,21 @@ std::string shellQuote(const std::string& text) {
     std::string quoted = "'";
     for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return quoted + "'";
+}
+
+std::string readFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::filesystem::path freshDir(const std::filesystem::path& root, const std::string& group, const std::string& name,
+                               bool create) {
+    const std::filesystem::path dir = root / group / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(create ? dir : dir.parent_path());
+    return dir;
 }
 
 }  // namespace signstim::test

@@ -1,6 +1,7 @@
 #pragma once
 // Running commands from the CLI tests: the built `signstim` binary (or any shell command),
 // with its output and exit status, as a user would see them.
+#include <filesystem>
 #include <string>
 
 namespace signstim::test {
@@ -22,6 +23,14 @@ CommandResult runShell(const std::string& command, Capture capture = Capture::St
 // shellQuote). `environment`: assignments put before the command, e.g. "SIGNSTIM_VALIDATION=1".
 CommandResult runSignstim(const std::string& arguments, Capture capture = Capture::StdoutAndStderr,
                           const std::string& environment = "");
+
+// The whole file (binary); empty when it cannot be read.
+std::string readFile(const std::filesystem::path& path);
+
+// `root`/`group`/`name`, removed if present; its parent created. With `create`, the folder
+// itself is created too. For test outputs under the build tree.
+std::filesystem::path freshDir(const std::filesystem::path& root, const std::string& group, const std::string& name,
+                               bool create = false);
 
 // `text` as one shell word: 'text', with any ' inside escaped.
 std::string shellQuote(const std::string& text);

@@ -14,23 +14,14 @@ namespace {
 
 namespace fs = std::filesystem;
 using signstim::test::runSignstim;
+using signstim::test::readFile;
 using signstim::test::shellQuote;
 
 const std::string kScenes = fs::path(SIGNSTIM_SOURCE_DIR).append("scenes").string();
 const std::string kExample = fs::path(kScenes).append("stories/examples/the-question.json").string();
 
 fs::path freshDir(const std::string& name) {
-    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "story_cli_test" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    return signstim::test::freshDir(SIGNSTIM_BINARY_DIR, "story_cli_test", name, true);
 }
 
 TEST(StoryCli, CheckSaysOkForTheExampleAndNamesLineAndColumnOfAnUnknownSign) {
