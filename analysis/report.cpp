@@ -166,7 +166,7 @@ const char* kStyle = R"(body{font-family:"DejaVu Sans",Verdana,Arial,sans-serif;
 h1{font-size:1.6em;margin-bottom:.2em}h2{margin-top:1.8em;border-bottom:1px solid #ddd;padding-bottom:.2em}h3{margin-top:1.4em}
 table{border-collapse:collapse;margin:.6em 0 1em;font-size:.92em}th,td{border:1px solid #d6d6d6;padding:3px 8px;text-align:right;vertical-align:top}
 th{background:#f3f3f3}td:first-child,th:first-child{text-align:left}tr.significant td{background:#fff6d9}
-figure{margin:1em 0 1.6em}figure svg{max-width:100%;height:auto;border:1px solid #eee}figcaption{font-size:.92em;color:#444;max-width:900px}
+figure{margin:1em 0 1.6em}figure svg{width:100%;max-width:860px;height:auto;border:1px solid #eee}figcaption{font-size:.92em;color:#444;max-width:900px}
 .note{font-size:.88em;color:#555}.files{white-space:nowrap}.banner{background:#b00020;color:#fff;padding:10px 14px;font-weight:bold;font-size:1.1em;border-radius:4px}
 .swatch{display:inline-block;width:.8em;height:.8em;margin-right:.35em;vertical-align:-.05em}
 .v-point{background:#0072b2}.v-vector{background:#e69f00}.v-animator{background:#009e73}.v-uninflected{background:#cc79a7}
