@@ -165,7 +165,7 @@ const Figure* findFigure(const std::vector<Figure>& figures, const std::string& 
 const char* kStyle = R"(body{font-family:"DejaVu Sans",Verdana,Arial,sans-serif;color:#222;max-width:1100px;margin:24px auto;padding:0 20px;line-height:1.45}
 h1{font-size:1.6em;margin-bottom:.2em}h2{margin-top:1.8em;border-bottom:1px solid #ddd;padding-bottom:.2em}h3{margin-top:1.4em}
 table{border-collapse:collapse;margin:.6em 0 1em;font-size:.92em}th,td{border:1px solid #d6d6d6;padding:3px 8px;text-align:right;vertical-align:top}
-th{background:#f3f3f3}td:first-child,th:first-child{text-align:left}tr.significant td{background:#fff6d9}
+th{background:#f3f3f3}td:first-child,th:first-child,td.text{text-align:left}tr.significant td{background:#fff6d9}
 figure{margin:1em 0 1.6em}figure svg{width:100%;max-width:860px;height:auto;border:1px solid #eee}figcaption{font-size:.92em;color:#444;max-width:900px}
 .note{font-size:.88em;color:#555}.files{white-space:nowrap}.banner{background:#b00020;color:#fff;padding:10px 14px;font-weight:bold;font-size:1.1em;border-radius:4px}
 .swatch{display:inline-block;width:.8em;height:.8em;margin-right:.35em;vertical-align:-.05em}
@@ -257,7 +257,7 @@ std::string reportHtml(const StudyAnalysis& a, const ReportInputs& in, const std
     s += "<h2>Data</h2>\n<table><thead><tr><th>participant</th><th>file</th><th>phase-1 trials</th><th>phase-2 trials</th>"
          "<th>SHA-256</th></tr></thead><tbody>\n";
     for (const ParticipantResults& r : *in.results)
-        s += "<tr><td>" + h(r.participant) + (r.synthetic ? " (synthetic)" : "") + "</td><td>" + h(r.fileName) + "</td><td>" +
+        s += "<tr><td>" + h(r.participant) + (r.synthetic ? " (synthetic)" : "") + "</td><td class=\"text\">" + h(r.fileName) + "</td><td>" +
              count(r.phase1.size()) + "</td><td>" + count(r.phase2.size()) + "</td><td><code>" + h(r.sha256.substr(0, 16)) +
              "&hellip;</code></td></tr>\n";
     s += "</tbody></table>\n";

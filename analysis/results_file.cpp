@@ -232,6 +232,8 @@ ParticipantResults parseResults(std::string_view text, const std::string& file, 
         const std::string phase = row.required("phase", "1 or 2");
         const long long trial = row.integer("trial", "a trial number 1, 2, ...");
         if (trial < 1) row.fail("trial", "expected a trial number 1, 2, ..., got " + std::to_string(trial));
+        if (const std::string rt = row.text("rt_ms"); !rt.empty() && !(numberValue(rt) && *numberValue(rt) >= 0))
+            row.fail("rt_ms", "expected a response time in milliseconds (a number >= 0) or empty, got '" + rt + "'");
 
         if (phase == "1") {
             Phase1Result r;
@@ -383,15 +385,10 @@ ParticipantResults parseResults(std::string_view text, const std::string& file, 
                                     ": the panel's rating is analysed"));
                 }
             }
-            if (!row.empty("rt_ms") && (!numberValue(row.text("rt_ms")) || *numberValue(row.text("rt_ms")) < 0))
-                row.fail("rt_ms", "expected a response time in milliseconds (a number >= 0) or empty, got '" + row.text("rt_ms") + "'");
             results.phase2.push_back(std::move(r));
-            continue;
         } else {
             row.fail("phase", "expected 1 (comprehension) or 2 (side-by-side rating), got '" + phase + "'");
         }
-        if (!row.empty("rt_ms") && (!numberValue(row.text("rt_ms")) || *numberValue(row.text("rt_ms")) < 0))
-            row.fail("rt_ms", "expected a response time in milliseconds (a number >= 0) or empty, got '" + row.text("rt_ms") + "'");
     }
 
     const stimuli::ListedParticipant& who = study.participants[results.participantIndex];

@@ -115,7 +115,9 @@ std::vector<SimulatedFile> simulateResults(const StudyListing& study, const Simu
             int correctCount = 0;
             for (std::size_t q = 0; q < story.questions.size() && q < 4; ++q) {
                 const stimuli::ListedQuestion& question = story.questions[q];
-                const bool correct = rng.uniform() < pCorrect;
+                // A question with one choice cannot be answered wrongly (the draw is made all the same,
+                // so the numbers that follow do not depend on it).
+                const bool correct = rng.uniform() < pCorrect || question.choices.size() < 2;
                 std::size_t choice = static_cast<std::size_t>(question.answer);
                 if (!correct) {
                     // One of the other choices, uniformly.
