@@ -114,7 +114,8 @@ std::string meansSummary(const StudyAnalysis& a, const Comparison& c, bool asPer
 void runAnalyze(const AnalyzeOptions& o) {
     if (!(o.alpha > 0.0 && o.alpha <= 0.5)) throw commandLineError("--alpha", rangeMessage(0.0, 0.5, "", o.alpha) + " (exclusive of 0)");
     const fs::path out = withoutTrailingSeparators(o.out);
-    if (out.has_extension() && out.extension() != ".report")
+    static const std::set<std::string> fileExtensions = {".html", ".htm", ".csv", ".json", ".svg", ".png", ".pdf", ".txt"};
+    if (fileExtensions.count(out.extension().string()))
         throw commandLineError("--out", "'" + o.out + "': the report is a folder (report.html, figures/, ...); give a folder name");
     checkReportFolder(out);
     checkOutputWritable(out);
