@@ -19,5 +19,6 @@ void registerAvatarCommands(Commands& commands);  // avatar build, handshapes, p
 void registerDemoCommand(Commands& commands);     // demo (the main job until the study exists)
 void registerStoryCommands(Commands& commands);   // story (check, timeline, render)
 void registerStudyCommands(Commands& commands);   // study (render, check, verify, merge), bench study
+void registerAnalysisCommands(Commands& commands);  // analyze, simulate-results
 
 }  // namespace signstim::app

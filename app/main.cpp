@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
     app::registerVerbCommands(commands);
     app::registerStoryCommands(commands);
     app::registerStudyCommands(commands);
+    app::registerAnalysisCommands(commands);
     app::requirePlainNumbers(root);
 
     try {

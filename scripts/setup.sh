@@ -9,6 +9,9 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglm-dev libtinygltf-dev nlohmann-json3-dev libeigen3-dev
   libcli11-dev libgtest-dev
+  # `signstim analyze`: Boost.Math's chi-squared, normal and Student's t distributions
+  # (header-only; the package brings libboost1.74-dev and its CMake config).
+  libboost-math-dev
   ffmpeg
   # OpenImageIO's CMake package (libopenimageio-dev) names its command-line tools as imported
   # targets and refuses to configure when /usr/bin/iconvert & co. are missing; they live in

@@ -17,3 +17,9 @@ add_dependencies(signstim_app_study_browser_tests signstim)
 gtest_discover_tests(signstim_app_study_browser_tests DISCOVERY_TIMEOUT 60
   PROPERTIES ENVIRONMENT "SIGNSTIM_SOURCE_DIR=${PROJECT_SOURCE_DIR}" LABELS browser RESOURCE_LOCK chromium
     SKIP_REGULAR_EXPRESSION "\\[  SKIPPED \\]" TIMEOUT 300)
+
+# `signstim analyze` and `simulate-results` end to end on the small study (analysis area).
+signstim_add_test(signstim_app_analysis_tests
+  SOURCES analysis_cli_test.cpp
+  LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
+add_dependencies(signstim_app_analysis_tests signstim)

@@ -1,0 +1,171 @@
+// `signstim analyze` and `signstim simulate-results` as a researcher runs them, on the small
+// study rendered by the built binary: synthetic results of its 4 participants analysed into a
+// report folder (the same bytes on a second run), and each kind of mistake refused with its
+// exit status and a message naming the file, line and column (or the flag).
+#include "tests/app/run_command.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using signstim::test::Capture;
+using signstim::test::runSignstim;
+using signstim::test::shellQuote;
+
+const std::string kScenes = fs::path(SIGNSTIM_SOURCE_DIR).append("scenes").string();
+const std::string kSmall = fs::path(SIGNSTIM_SOURCE_DIR).append("tests/app/data/small-study.json").string();
+
+fs::path freshDir(const std::string& name) {
+    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "analysis_cli_test" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir.parent_path());
+    return dir;
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void writeFile(const fs::path& path, const std::string& text) {
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+// The small study, rendered once per test process (CTest runs each test in its own).
+const fs::path& smallStudy() {
+    static const fs::path dir = [] {
+        const fs::path d = freshDir(std::string("study-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        const auto r = runSignstim("study " + shellQuote(kSmall) + " --quiet --quick --out " + shellQuote(d.string()) + " --scenes " +
+                                   shellQuote(kScenes));
+        EXPECT_EQ(r.status, 0) << r.output;
+        return d;
+    }();
+    return dir;
+}
+
+fs::path simulate(const std::string& name, const std::string& flags = "") {
+    const fs::path out = freshDir(name);
+    const auto r = runSignstim("simulate-results --study " + shellQuote(smallStudy().string()) + " --out " + shellQuote(out.string()) + " " + flags);
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("4 SYNTHETIC results files"), std::string::npos) << r.output;
+    return out;
+}
+
+std::string analyze(const fs::path& results, const fs::path& out, const std::string& flags = "") {
+    return "analyze " + shellQuote(results.string()) + " --study " + shellQuote(smallStudy().string()) + " --out " +
+           shellQuote(out.string()) + " " + flags;
+}
+
+TEST(AnalysisCli, SyntheticResultsOfARenderedStudyBecomeAReportWithTheSameBytesTwice) {
+    const fs::path results = simulate("synthetic");
+    ASSERT_TRUE(fs::exists(results / "signstim-results_P01_SYNTHETIC.csv"));
+    const fs::path first = freshDir("report-1"), second = freshDir("report-2");
+    const auto r = runSignstim(analyze(results, first));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("report.html: SYNTHETIC DATA; 4 of 4 participants; 0 data warning(s)"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("phase 1 comprehension: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("Kruskal-Wallis H(3) = "), std::string::npos) << r.output;
+    ASSERT_EQ(runSignstim(analyze(results, second)).status, 0);
+    std::size_t files = 0;
+    for (const fs::directory_entry& e : fs::recursive_directory_iterator(first)) {
+        if (!e.is_regular_file()) continue;
+        ++files;
+        const fs::path relative = fs::relative(e.path(), first);
+        EXPECT_EQ(readFile(e.path()), readFile(second / relative)) << relative;
+        EXPECT_EQ(relative.string().find(".tmp"), std::string::npos) << relative;
+    }
+    EXPECT_EQ(files, 5u + 2u * 4u);  // report, 3 CSVs, JSON; 4 figures as SVG and PNG
+    const nlohmann::json summary = nlohmann::json::parse(readFile(first / "summary.json"));
+    EXPECT_EQ(summary["study"]["participants"], 4);
+    EXPECT_TRUE(summary["synthetic"].get<bool>());
+    // A second analysis into the same folder replaces the report.
+    ASSERT_EQ(runSignstim(analyze(results, first, "--alpha 0.01")).status, 0);
+    EXPECT_EQ(nlohmann::json::parse(readFile(first / "summary.json"))["settings"]["alpha"], 0.01);
+}
+
+TEST(AnalysisCli, MistakesExitWithTheirStatusNamingWhatToChange) {
+    const fs::path results = simulate("mistakes", "--effect none --seed 3");
+    const fs::path p1 = results / "signstim-results_P01_SYNTHETIC.csv";
+    std::string text = readFile(p1);
+    const std::size_t firstRow = text.find("\r\nP01,1,") + 2;
+    const std::size_t versionAt = text.find(",story-", firstRow);
+    const std::size_t comma = text.find(',', versionAt + 1);  // story_id,sentence_id,version
+    const std::size_t versionStart = text.find(',', comma + 1) + 1;
+    const std::size_t versionEnd = text.find(',', versionStart);
+    std::string bad = text;
+    bad.replace(versionStart, versionEnd - versionStart, "vectr");
+    const fs::path badDir = freshDir("bad-results");
+    writeFile(badDir / "signstim-results_P01.csv", bad);
+    const fs::path out = freshDir("mistakes-report");
+    auto r = runSignstim(analyze(badDir, out));
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("signstim-results_P01.csv:3: field 'version': 'vectr' is not a version of this study"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(fs::exists(out));
+
+    r = runSignstim(analyze(results, out, "--alpha 0"));
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("field '--alpha'"), std::string::npos) << r.output;
+
+    r = runSignstim("analyze " + shellQuote(results.string()) + " --study " + shellQuote(results.string()) + " --out " +
+                    shellQuote(out.string()));
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("no manifest.json"), std::string::npos) << r.output;
+
+    // A folder holding someone's files is not replaced.
+    const fs::path busy = freshDir("busy");
+    writeFile(busy / "notes.txt", "mine");
+    r = runSignstim(analyze(results, busy));
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("holds 'notes.txt', which is not part of an analysis report"), std::string::npos) << r.output;
+    EXPECT_EQ(readFile(busy / "notes.txt"), "mine");
+
+    // A scoring disagreement is a warning (exit 0, listed) and with --strict an error.
+    std::string disagreeing = text;
+    const std::size_t correctAt = disagreeing.find(",1,", disagreeing.find("\r\nP01,1,") + 20);
+    disagreeing.replace(correctAt, 3, ",0,");  // some qN_correct or n_correct now disagrees
+    const fs::path warnDir = freshDir("warn-results");
+    writeFile(warnDir / "signstim-results_P01.csv", disagreeing);
+    r = runSignstim(analyze(warnDir, freshDir("warn-report")));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("signstim: warning: "), std::string::npos) << r.output;
+    r = runSignstim(analyze(warnDir, freshDir("strict-report"), "--strict"));
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("--strict makes them errors"), std::string::npos) << r.output;
+
+    r = runSignstim("simulate-results --study " + shellQuote(smallStudy().string()) + " --out " + shellQuote(freshDir("x").string()) +
+                    " --accuracy animator=1.5");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("field '--accuracy': animator: expected a number between 0 and 1 (exclusive)"), std::string::npos)
+        << r.output;
+}
+
+TEST(AnalysisCli, AColumnMapReadsAnotherProgramsColumnNames) {
+    const fs::path results = simulate("mapped", "--seed 8");
+    const fs::path renamed = freshDir("renamed");
+    for (const fs::directory_entry& e : fs::directory_iterator(results)) {
+        std::string text = readFile(e.path());
+        text.replace(text.find("participant,phase,trial"), 23, "participant_id,phase,trial");
+        writeFile(renamed / e.path().filename(), text);
+    }
+    const fs::path map = renamed.parent_path() / "gorilla-columns.json";
+    writeFile(map, "{\"format\": \"signstim-results-columns\", \"version\": 1, \"columns\": {\"participant\": \"participant_id\"}}\n");
+    auto r = runSignstim(analyze(renamed, freshDir("mapped-report-no-map")));
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("field 'participant': this column is missing from the header"), std::string::npos) << r.output;
+    r = runSignstim(analyze(renamed, freshDir("mapped-report"), "--columns " + shellQuote(map.string())));
+    EXPECT_EQ(r.status, 0) << r.output;
+}
+
+}  // namespace
