@@ -71,12 +71,17 @@ void reportClearance(const StoryWorld& world, const Story& story, const Timeline
         std::printf("  %*s  a hand and the body %s; in signs that touch it %s\n", static_cast<int>(toString(v).size()), "",
                     place(t, summary.body).c_str(), place(t, summary.bodyInContactSigns).c_str());
         for (const ClearanceViolation& violation : summary.violations) {
-            char text[320];
+            char text[400];
+            const char* advice = violation.transition ? ""
+                                 : violation.contact
+                                     ? "; the sign touches there, but a touch brings the hand to the surface, not through it"
+                                     : "; if the sign touches there on purpose, say so (\"contact\")";
             std::snprintf(text, sizeof text, "%s: %s: %s %.1f mm apart at %.2f s (%.1f mm allowed)%s", toString(v).c_str(),
                           describeClearancePlace(t, violation.before, violation.after).c_str(),
-                          violation.hands ? "the hands interpenetrate," : "a hand is in the body,", violation.gapMm,
-                          violation.seconds, violation.allowedMm,
-                          violation.transition ? "" : "; if the sign touches there on purpose, say so (\"contact\")");
+                          violation.contact ? (violation.hands ? "the hands sink into each other," : "a hand sinks into the body,")
+                          : violation.hands ? "the hands interpenetrate,"
+                                            : "a hand is in the body,",
+                          violation.gapMm, violation.seconds, violation.allowedMm, advice);
             warnings.push_back(text);
         }
     }

@@ -150,7 +150,7 @@ std::vector<ClearanceFrame> clearanceFrames(const SignerRig& rig, const Timeline
 }
 
 ClearanceSummary checkClearance(const stimuli::Timeline& timeline, const std::vector<ClearanceFrame>& frames,
-                                float toleranceMm) {
+                                float toleranceMm, float contactDepthMm) {
     ClearanceSummary summary;
     for (const bool hands : {true, false}) {
         const auto gapOf = [&](std::size_t i) { return hands ? frames[i].clearance.hands.gapMm : frames[i].clearance.body.gapMm; };
@@ -159,6 +159,7 @@ ClearanceSummary checkClearance(const stimuli::Timeline& timeline, const std::ve
             std::size_t end = i;
             while (end < frames.size() && frames[end].span == frames[i].span) ++end;
             const bool transition = frames[i].span < 0;
+            bool touches = false;
             int before = frames[i].span, after = frames[i].span;
             float allowed = -toleranceMm;
             ClearanceExtreme* extreme = nullptr;  // which closest approach these frames count for
@@ -172,8 +173,8 @@ ClearanceSummary checkClearance(const stimuli::Timeline& timeline, const std::ve
                 if (allowed == -toleranceMm) extreme = hands ? &summary.handsAtTransitions : &summary.body;
             } else {
                 const stimuli::TimelineSpan& span = timeline.spans[static_cast<std::size_t>(frames[i].span)];
-                const bool touches = hands ? span.contact.hands : span.contact.body;
-                if (touches) allowed = -std::numeric_limits<float>::infinity();
+                touches = hands ? span.contact.hands : span.contact.body;
+                if (touches) allowed = -contactDepthMm;
                 extreme = hands ? (touches ? &summary.handsInContactSigns
                                    : span.kind == stimuli::SpanKind::Rest ? nullptr
                                                                           : &summary.handsInSigns)
@@ -185,7 +186,8 @@ ClearanceSummary checkClearance(const stimuli::Timeline& timeline, const std::ve
             if (extreme && gapOf(deepest) < extreme->gapMm)
                 *extreme = {gapOf(deepest), frames[deepest].seconds, before, after};
             if (gapOf(deepest) < allowed)
-                summary.violations.push_back({hands, transition, before, after, frames[deepest].seconds, gapOf(deepest), allowed});
+                summary.violations.push_back(
+                    {hands, transition, touches, before, after, frames[deepest].seconds, gapOf(deepest), allowed});
             i = end;
         }
     }

@@ -72,16 +72,28 @@ std::vector<ClearanceFrame> clearanceFrames(const SignerRig& rig, const Timeline
 // capsules follow the drawn hand to a millimetre or two; a palm pressed on a palm dents.
 inline constexpr float kClearanceToleranceMm = 3.0f;
 
+// [D] Inside a sign that touches on purpose, how deep the touch may go: deeper, the hand is
+// seen through the body or the other hand. What the capsules add to the drawn surfaces where
+// they meet: up to 3 mm on the torso (a capsule is rounder than the mesh's superellipse
+// section, exponent 2.6, beside the sternum), 1 mm on a finger (the mesh is 12% flatter
+// palmar-dorsal than its capsule), and a fingertip placed on a surface ("touch": "index-tip"
+// puts the tip joint there) sinks its capsule's round end in by part of its 7-9 mm radius
+// when the finger meets the surface at a slant; a fingertip pad and clothing give 2-3 mm
+// under a press. 10 mm covers the sum; a hand through the body is far deeper (30-100 mm).
+inline constexpr float kContactDepthToleranceMm = 10.0f;
+
 // The rules (docs/stories.md, "Timing"), for the hands against each other and each hand
 // against the body:
 //  - inside an item's own keys they keep clear, unless its citation form touches on purpose
 //    (TimelineSpan::contact: hands, body);
 //  - in a transition they never come closer than at its ends: where an item there touches,
 //    the transition leaves or reaches that contact, and goes no deeper.
+//  - inside an item that touches there, the touch goes no deeper than contactDepthMm.
 // Keeping clear allows kClearanceToleranceMm of overlap.
 struct ClearanceViolation {
     bool hands = true;        // the hands against each other (else a hand against the body)
     bool transition = false;  // in a transition (else inside an item's keys)
+    bool contact = false;     // inside an item that touches there: the touch is too deep
     int before = -1, after = -1;  // a transition's items (indices into Timeline::spans), or the item twice
     double seconds = 0.0;     // the deepest frame
     float gapMm = 0.0f;       // its gap
@@ -106,7 +118,8 @@ struct ClearanceSummary {
     std::vector<ClearanceViolation> violations;  // the deepest frame of each offending stretch
 };
 ClearanceSummary checkClearance(const stimuli::Timeline& timeline, const std::vector<ClearanceFrame>& frames,
-                                float toleranceMm = kClearanceToleranceMm);
+                                float toleranceMm = kClearanceToleranceMm,
+                                float contactDepthMm = kContactDepthToleranceMm);
 
 // Where in the story: "BOOK (sentence 3)" for an item, "IX -> BOOK (sentence 3)" for a
 // transition (spans as in ClearanceViolation).

@@ -111,6 +111,40 @@ TEST(Clearance, ClosestApproachIsTheSmallestSurfaceGap) {
     EXPECT_NEAR(signer::closestApproach(first, crossing).gapMm, -18.0f, 1e-4f);
 }
 
+TEST(Clearance, ATouchMayDentButNotSinkIn) {
+    // One sign that touches the body, one that does not, each 0.2 s at 10 fps: in the first a
+    // hand may sink in up to kContactDepthToleranceMm (and no deeper), in the second only
+    // kClearanceToleranceMm; the touching sign's violation says it is a contact.
+    stimuli::Timeline timeline;
+    timeline.spans = {{stimuli::SpanKind::Sign, 0.0, 0.2, "MY", 0, 0, 0.0, 0.2, {}},
+                      {stimuli::SpanKind::Sign, 0.3, 0.5, "WHO", 0, 1, 0.3, 0.5, {}}};
+    timeline.spans[0].contact.body = true;
+    const auto framesWith = [](float touching, float clear) {
+        std::vector<signer::ClearanceFrame> frames;
+        for (int f = 0; f <= 5; ++f) {
+            signer::ClearanceFrame frame;
+            frame.seconds = f / 10.0;
+            frame.span = f <= 2 ? 0 : f == 3 ? -1 : 1;
+            frame.clearance.hands.gapMm = 100.0f;
+            frame.clearance.body.gapMm = f <= 2 ? touching : f == 3 ? 50.0f : clear;
+            frames.push_back(frame);
+        }
+        return frames;
+    };
+    const float depth = signer::kContactDepthToleranceMm;
+    EXPECT_TRUE(signer::checkClearance(timeline, framesWith(-depth + 0.5f, 0.0f)).violations.empty());
+    const signer::ClearanceSummary sunk = signer::checkClearance(timeline, framesWith(-depth - 0.5f, 0.0f));
+    ASSERT_EQ(sunk.violations.size(), 1u);
+    EXPECT_TRUE(sunk.violations[0].contact);
+    EXPECT_FALSE(sunk.violations[0].hands);
+    EXPECT_FLOAT_EQ(sunk.violations[0].allowedMm, -depth);
+    EXPECT_FLOAT_EQ(sunk.bodyInContactSigns.gapMm, -depth - 0.5f);
+    const signer::ClearanceSummary inBody = signer::checkClearance(timeline, framesWith(0.0f, -5.0f));
+    ASSERT_EQ(inBody.violations.size(), 1u);
+    EXPECT_FALSE(inBody.violations[0].contact);
+    EXPECT_EQ(inBody.violations[0].before, 1);
+}
+
 TEST(Clearance, TransitionsDetourAroundTheOtherHandAndKeepTheirKeys) {
     // The right hand crosses from the signer's left to the right while the left hand holds
     // still across its straight path: the transition goes around the left hand, and the
@@ -246,7 +280,49 @@ TEST_P(StoryClearance, HandsNeverInterpenetrateAtTransitions) {
 TEST_P(StoryClearance, HandsTouchOnlyInSignsThatTouch) {
     // Inside an item's own keys the hands touch each other, or a hand the body, only where
     // the lexicon or verbs.json says the citation form does ("contact").
-    const std::string found = violations(check(GetParam()), [](const signer::ClearanceViolation& v) { return !v.transition; });
+    const std::string found =
+        violations(check(GetParam()), [](const signer::ClearanceViolation& v) { return !v.transition && !v.contact; });
+    EXPECT_TRUE(found.empty()) << found;
+}
+
+// Signs whose touch still goes deeper than kContactDepthToleranceMm, not yet fixed, each held
+// at the depth measured when the rule came (mm, to 0.5 mm): the hand-to-hand signs meet
+// about 20 mm deep (the closed fingers of one hand in the other's palm or knuckles), BROTHER's
+// thumb at the forehead 21 mm. A sign not listed, or one going deeper, fails; remove a line
+// when its sign is fixed.
+struct KnownTooDeep {
+    const char* sign;
+    bool hands;
+    float deepestMm;
+};
+const KnownTooDeep kKnownTooDeep[] = {
+    {"BOOK", true, -21},     {"BROTHER", false, -21}, {"BROTHER", true, -22}, {"CAKE", true, -19},
+    {"CLASS", true, -20},    {"COOK", true, -21},     {"COPY", true, -19},    {"EMAIL", true, -23},
+    {"FRIEND", true, -20},   {"HELP", true, -21},     {"HOMEWORK", true, -15}, {"HUSBAND", true, -20},
+    {"KEY", true, -18},      {"LATER", true, -14},    {"LOSE", true, -23},    {"MEET", true, -22},
+    {"MEETING", true, -19},  {"NEIGHBOR", true, -18}, {"NICE", true, -19},    {"PRACTICE", true, -17},
+    {"READ", true, -11},     {"SEND", true, -21},     {"WORK", true, -21}};
+
+TEST_P(StoryClearance, ContactSignsTouchWithoutSinkingIn) {
+    // Where a sign touches on purpose, the hand comes to the surface, of the body or of the
+    // other hand, and goes no deeper than kContactDepthToleranceMm into it (but for the signs
+    // of kKnownTooDeep, no deeper than they went).
+    const std::vector<Checked> checked = check(GetParam());
+    std::string found;
+    for (const Checked& c : checked)
+        for (const signer::ClearanceViolation& v : c.summary.violations) {
+            if (!v.contact) continue;
+            const std::string& sign = c.timeline.spans[static_cast<std::size_t>(v.after)].label;
+            bool known = false;
+            for (const KnownTooDeep& k : kKnownTooDeep)
+                known = known || (sign == k.sign && v.hands == k.hands && v.gapMm >= k.deepestMm - 0.5f);
+            if (known) continue;
+            char line[200];
+            std::snprintf(line, sizeof line, "\n  %s %s: %s %.1f mm apart at %.2f s (at least %.1f allowed)",
+                          c.timeline.version.c_str(), signer::describeClearancePlace(c.timeline, v.before, v.after).c_str(),
+                          v.hands ? "hands" : "hand and body", v.gapMm, v.seconds, v.allowedMm);
+            found += line;
+        }
     EXPECT_TRUE(found.empty()) << found;
 }
 
