@@ -24,7 +24,7 @@ say() { echo "submit-study: $*" >&2; }
 usage() { sed -n '5,20p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 1; }
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-cpus=4 time= partition= gpu=0 per_task=0 logs= signstim=${SIGNSTIM:-}
+cpus=4 time='' partition='' gpu=0 per_task=0 logs='' signstim=${SIGNSTIM:-}
 extra_sbatch=() positional=() study_options=()
 while (($# > 0)); do
   case "$1" in
@@ -65,7 +65,7 @@ logs=$(realpath -m "${logs:-$out.slurm-logs}")
   { say "the study does not check (above); nothing submitted"; exit 1; }
 
 mkdir -p "$logs"  # Slurm does not create the folder of --output; a job without it fails
-common=(--parsable --export=ALL,SIGNSTIM="$signstim" "${extra_sbatch[@]}")
+common=(--parsable "--export=ALL,SIGNSTIM=$signstim" "${extra_sbatch[@]}")
 array=(--array="0-$((tasks - 1))" --cpus-per-task="$cpus" --output="$logs/array-%A_%a.out")
 [[ -n $time ]] && array+=(--time="$time")
 [[ -n $partition ]] && array+=(--partition="$partition")
