@@ -28,7 +28,9 @@ void writeNewFile(const std::filesystem::path& path, std::string_view bytes,
                   const std::filesystem::path& nameInMessages = {});
 
 // A temporary name next to `target` (same folder, so rename() is atomic), unique per process
-// and call: TARGET.tmp-PID-N. Trailing separators of `target` are ignored ("frames/").
+// and call: TARGET.tmp-PID-N. Trailing separators of `target` are ignored ("frames/"). Not
+// unique across machines sharing a folder: TemporaryFile and TemporaryFolder pass over a
+// name that exists.
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 
 // `path` without trailing '/' ("frames/" -> "frames"; "/" stays): tab completion adds one to
