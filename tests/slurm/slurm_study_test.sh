@@ -151,7 +151,7 @@ export SLURM_CONF=$work/slurm.conf
 cat >"$SLURM_CONF" <<EOF
 # Throwaway one-node cluster of tests/slurm/slurm_study_test.sh; no cgroups, no accounting.
 ClusterName=signstim-test
-SlurmctldHost=localhost
+SlurmctldHost=localhost(127.0.0.1)
 SlurmctldPort=$port
 SlurmdPort=$((port + 1))
 SlurmUser=root
