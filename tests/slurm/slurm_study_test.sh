@@ -8,9 +8,11 @@
 # It submits the small study (tests/app/data/small-study.json) with
 # scripts/slurm/submit-study.sh as a 3-task array plus the dependent merge + verify job, once
 # into one shared folder and once into per-task folders, waits for them, and checks that each
-# merged study equals a single-machine run byte for byte (manifest.json) and verifies; that
-# every task rendered its own units and no unit twice; and that submitting again resumes
-# (every unit skipped, the same manifest).
+# merged study equals a single-machine run byte for byte (manifest.json) and verifies, and
+# that every task rendered its own units and no unit twice. Then it cancels a one-task array
+# after its first unit (Slurm's SIGTERM, as at a time limit): no temporary or manifest is
+# left and the merge job is cancelled; submitting again renders only the missing units and
+# gives the same manifest.
 #
 # Exit status: 0 passed; 1 failed (the jobs' logs are printed); 77 skipped, with the reason:
 # Slurm or munge not installed (scripts/setup.sh --with-slurm), not root, or a daemon that
@@ -218,10 +220,10 @@ reference=$work/reference
 say "single-machine run in $((SECONDS - start)) s"
 
 # ---- the array and the merge job, in both layouts ----------------------------------------
-submit_study() {  # $1: OUT, rest: submit-study options; sets array_id, merge_id
-  local out=$1 ids
-  shift
-  ids=$(env "$marker" "$submit" --cpus 1 --signstim "$signstim" "$@" "$small" "$out" 3 -- --scenes "$scenes" \
+submit_study() {  # $1: OUT, $2: tasks, rest: submit-study options; sets array_id, merge_id
+  local out=$1 tasks=$2 ids
+  shift 2
+  ids=$(env "$marker" "$submit" --cpus 1 --signstim "$signstim" "$@" "$small" "$out" "$tasks" -- --scenes "$scenes" \
     2>"$work/jobs/submit.err") || { cat "$work/jobs/submit.err"; fail "submit-study.sh failed"; }
   array_id=$(awk '$1 == "array" {print $2}' <<<"$ids")
   merge_id=$(awk '$1 == "merge" {print $2}' <<<"$ids")
@@ -259,9 +261,9 @@ units=$(grep -o '[0-9]* of [0-9]* units rendered' "$work/jobs/reference.out" | c
 [[ -n $units ]] || { tail_of "$work/jobs/reference.out"; fail "the single-machine run printed no unit count"; }
 shared=$work/shared-study
 per_task=$work/per-task-study
-submit_study "$shared"
+submit_study "$shared" 3
 shared_array=$array_id shared_merge=$merge_id
-submit_study "$per_task" --per-task-folders
+submit_study "$per_task" 3 --per-task-folders
 per_task_array=$array_id per_task_merge=$merge_id
 say "submitted: shared folder $shared_array + $shared_merge, per-task folders $per_task_array + $per_task_merge"
 wait_for 240 all_finished "$shared_merge" "$per_task_merge" ||
@@ -270,9 +272,31 @@ say "both arrays and merge jobs done in $((SECONDS - start)) s"
 check_run "shared folder" "$shared" "$shared_array" "$shared_merge" "$units"
 check_run "per-task folders" "$per_task" "$per_task_array" "$per_task_merge" "$units"
 
-# ---- resume: the same submission again skips every unit ------------------------------------
-submit_study "$shared"
-wait_for 120 all_finished "$merge_id" || { squeue; fail "the second submission did not finish in time"; }
-check_run "resubmitted" "$shared" "$array_id" "$merge_id" 0
+# ---- Slurm's SIGTERM mid-run leaves no broken file; submitting again finishes the rest -----
+# One task renders all units; it is cancelled once its first unit is complete. Slurm sends
+# SIGTERM as at a time limit (then SIGKILL after KillWait).
+interrupted=$work/interrupted-study
+submit_study "$interrupted" 1
+first_unit_done() { compgen -G "$interrupted/.signstim/units/*.json"; }
+wait_for 120 first_unit_done || fail "interrupted: no unit completed within 120 s"
+scancel "$array_id"
+wait_for 60 all_finished "${array_id}_0" "$merge_id" || { squeue; fail "interrupted: the jobs did not end after scancel"; }
+logs=$interrupted.slurm-logs
+done_before=$(compgen -G "$interrupted/.signstim/units/*.json" | wc -l)
+state=$(job_state "${array_id}_0")
+[[ $state == CANCELLED ]] ||
+  { tail_of "$logs"/*; fail "interrupted: the task ended $state before it could be cancelled (it had $done_before of $units units)"; }
+grep -q "interrupted by SIGTERM" "$logs/array-${array_id}_0.out" ||
+  { tail_of "$logs"/*; fail "interrupted: signstim did not report Slurm's SIGTERM"; }
+state=$(job_state "$merge_id")
+[[ $state == CANCELLED ]] || fail "interrupted: the merge job ended $state, not cancelled by its failed dependency"
+broken=$(find "$interrupted" -name '*.tmp-*' | head -n 5)
+[[ -z $broken ]] || fail "interrupted: temporaries left behind: $broken"
+[[ ! -e $interrupted/manifest.json ]] || fail "interrupted: a manifest, with units missing"
+((done_before < units)) || fail "interrupted: every unit was complete, nothing was interrupted"
+say "interrupted: Slurm's SIGTERM stopped the task with $done_before of $units units complete, no temporary left"
+submit_study "$interrupted" 3
+wait_for 120 all_finished "$merge_id" || { squeue; fail "the resubmission did not finish in time"; }
+check_run "resubmitted after the interruption" "$interrupted" "$array_id" "$merge_id" $((units - done_before))
 
 say "passed in $((SECONDS - start)) s"
