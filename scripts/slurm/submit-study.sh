@@ -11,6 +11,8 @@
 #   --partition P     partition of the array tasks (sbatch --partition)
 #   --gpu             one GPU per task (--gres=gpu:1); signstim renders on it with Vulkan
 #   --per-task-folders  each task writes OUT.shards/task-I; the merge job copies them into OUT
+#   --tasks LIST      submit only these tasks of the N (sbatch --array syntax: 3,7 or 2-4), e.g.
+#                     those that failed; the merge job then needs the others' units complete
 #   --logs DIR        where Slurm writes the jobs' output (default OUT.slurm-logs)
 #   --sbatch ARG      one more sbatch option for both jobs (repeatable: --sbatch --account=lab)
 #   --signstim PATH   the binary (default: $SIGNSTIM, else build/signstim of this checkout,
@@ -21,10 +23,10 @@
 set -euo pipefail
 
 say() { echo "submit-study: $*" >&2; }
-usage() { sed -n '5,20p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 1; }
+usage() { sed -n '5,22p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 1; }
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-cpus=4 time='' partition='' gpu=0 per_task=0 logs='' signstim=${SIGNSTIM:-}
+cpus=4 time='' partition='' gpu=0 per_task=0 logs='' only='' signstim=${SIGNSTIM:-}
 extra_sbatch=() positional=() study_options=()
 while (($# > 0)); do
   case "$1" in
@@ -33,6 +35,7 @@ while (($# > 0)); do
     --partition) partition=${2:?--partition needs a name}; shift 2 ;;
     --gpu) gpu=1; shift ;;
     --per-task-folders) per_task=1; shift ;;
+    --tasks) only=${2:?--tasks needs a list of task ids}; shift 2 ;;
     --logs) logs=${2:?--logs needs a folder}; shift 2 ;;
     --sbatch) extra_sbatch+=("${2:?--sbatch needs an option}"); shift 2 ;;
     --signstim) signstim=${2:?--signstim needs a path}; shift 2 ;;
@@ -46,6 +49,13 @@ done
 study=${positional[0]} out=${positional[1]} tasks=${positional[2]}
 [[ $tasks =~ ^[1-9][0-9]*$ ]] || { say "N must be a whole number of tasks, 1 or more, got '$tasks'"; exit 1; }
 [[ $cpus =~ ^[1-9][0-9]*$ ]] || { say "--cpus must be a whole number, 1 or more, got '$cpus'"; exit 1; }
+if [[ -n $only ]]; then
+  [[ $only =~ ^[0-9]+(-[0-9]+)?(,[0-9]+(-[0-9]+)?)*$ ]] ||
+    { say "--tasks takes task ids like 3,7 or 2-4, got '$only'"; exit 1; }
+  for id in $(tr ',-' '  ' <<<"$only"); do
+    ((10#$id < tasks)) || { say "--tasks: task $id is not one of the $tasks (0 to $((tasks - 1)))"; exit 1; }
+  done
+fi
 [[ -f $study ]] || { say "no study file '$study'"; exit 1; }
 command -v sbatch >/dev/null || { say "sbatch is not on PATH: run this on a Slurm login node"; exit 1; }
 
@@ -65,8 +75,9 @@ logs=$(realpath -m "${logs:-$out.slurm-logs}")
   { say "the study does not check (above); nothing submitted"; exit 1; }
 
 mkdir -p "$logs"  # Slurm does not create the folder of --output; a job without it fails
-common=(--parsable "--export=ALL,SIGNSTIM=$signstim" "${extra_sbatch[@]}")
-array=(--array="0-$((tasks - 1))" --cpus-per-task="$cpus" --output="$logs/array-%A_%a.out")
+# SIGNSTIM_SHARDS: the task id is the shard of N, whichever tasks are submitted (--tasks).
+common=(--parsable "--export=ALL,SIGNSTIM=$signstim,SIGNSTIM_SHARDS=$tasks" "${extra_sbatch[@]}")
+array=(--array="${only:-0-$((tasks - 1))}" --cpus-per-task="$cpus" --output="$logs/array-%A_%a.out")
 [[ -n $time ]] && array+=(--time="$time")
 [[ -n $partition ]] && array+=(--partition="$partition")
 ((gpu)) && array+=(--gres=gpu:1)
@@ -86,7 +97,7 @@ merge_id=$(sbatch "${common[@]}" --dependency="afterok:$array_id" --kill-on-inva
   --output="$logs/merge-%j.out" "$here/study-merge.sbatch" "$out" "${shards[@]}")
 merge_id=${merge_id%%;*}
 
-say "$tasks array tasks of $(basename "$study") into $out; logs in $logs"
+say "${only:+tasks $only of }$tasks array tasks of $(basename "$study") into $out; logs in $logs"
 say "watch: squeue -j $array_id,$merge_id   result: $logs/merge-$merge_id.out"
 echo "array $array_id"
 echo "merge $merge_id"

@@ -232,9 +232,10 @@ submit_study() {  # $1: OUT, $2: tasks, rest: submit-study options; sets array_i
 finished() { [[ $(job_state "$1") =~ ^(COMPLETED|FAILED|CANCELLED|TIMEOUT|NODE_FAIL|OUT_OF_MEMORY|PREEMPTED)$ ]]; }
 all_finished() { local id; for id in "$@"; do finished "$id" || return 1; done; }
 
-check_run() {  # $1: label, $2: OUT, $3: array id, $4: merge id, $5: expected "rendered" total
-  local label=$1 out=$2 array=$3 merge=$4 expect_rendered=$5 logs=$2.slurm-logs task state rendered=0 n
-  for task in 0 1 2; do
+tasks_ran() {  # $1: label, $2: OUT, $3: array id, $4: task ids; sets rendered (their sum)
+  local label=$1 logs=$2.slurm-logs array=$3 task state n
+  rendered=0
+  for task in $4; do
     state=$(job_state "${array}_$task")
     [[ $state == COMPLETED ]] || {
       tail_of "$logs"/*
@@ -246,6 +247,11 @@ check_run() {  # $1: label, $2: OUT, $3: array id, $4: merge id, $5: expected "r
     n=$(grep -o '[0-9]* of [0-9]* units rendered' "$logs/array-${array}_$task.out" | tail -n 1 | cut -d' ' -f1)
     rendered=$((rendered + ${n:-0}))
   done
+}
+
+check_run() {  # $1: label, $2: OUT, $3: array id, $4: merge id, $5: expected "rendered" total, $6: task ids
+  local label=$1 out=$2 array=$3 merge=$4 expect_rendered=$5 logs=$2.slurm-logs state
+  tasks_ran "$label" "$out" "$array" "${6:-0 1 2}"
   state=$(job_state "$merge")
   [[ $state == COMPLETED ]] || { tail_of "$logs"/*; fail "$label: the merge job ended $state"; }
   grep -q "verified" "$logs/merge-$merge.out" || { tail_of "$logs/merge-$merge.out"; fail "$label: merge job did not verify"; }
@@ -254,7 +260,7 @@ check_run() {  # $1: label, $2: OUT, $3: array id, $4: merge id, $5: expected "r
     fail "$label: $out/manifest.json differs from the single-machine run's"
   "$signstim" study verify "$out" >"$work/jobs/verify.out" 2>&1 ||
     { tail_of "$work/jobs/verify.out"; fail "$label: signstim study verify $out failed"; }
-  say "$label: 3 tasks rendered $rendered units, merged, verified; manifest equals the single-machine run's"
+  say "$label: tasks ${6:-0 1 2} rendered $rendered units, merged, verified; manifest equals the single-machine run's"
 }
 
 units=$(grep -o '[0-9]* of [0-9]* units rendered' "$work/jobs/reference.out" | cut -d' ' -f1)
@@ -295,8 +301,20 @@ broken=$(find "$interrupted" -name '*.tmp-*' | head -n 5)
 [[ ! -e $interrupted/manifest.json ]] || fail "interrupted: a manifest, with units missing"
 ((done_before < units)) || fail "interrupted: every unit was complete, nothing was interrupted"
 say "interrupted: Slurm's SIGTERM stopped the task with $done_before of $units units complete, no temporary left"
-submit_study "$interrupted" 3
-wait_for 120 all_finished "$merge_id" || { squeue; fail "the resubmission did not finish in time"; }
-check_run "resubmitted after the interruption" "$interrupted" "$array_id" "$merge_id" $((units - done_before))
+# Some tasks again (--tasks 1,2 of 3: their ids stay their shards): the merge job must fail,
+# naming the units of shard 0 that are still missing; then task 0 finishes the study.
+submit_study "$interrupted" 3 --tasks 1,2
+wait_for 120 all_finished "$merge_id" || { squeue; fail "the resubmission of tasks 1,2 did not finish in time"; }
+tasks_ran "tasks 1,2 of 3" "$interrupted" "$array_id" "1 2"
+some=$rendered
+state=$(job_state "$merge_id")
+if [[ $state != FAILED ]] || ! grep -q "units are in none of the folders" "$logs/merge-$merge_id.out"; then
+  tail_of "$logs/merge-$merge_id.out"
+  fail "tasks 1,2 of 3: the merge job ended $state, not failed naming the missing units"
+fi
+say "tasks 1,2 of 3: rendered $some units; the merge job failed, naming the units still missing"
+submit_study "$interrupted" 3 --tasks 0
+wait_for 120 all_finished "$merge_id" || { squeue; fail "the resubmission of task 0 did not finish in time"; }
+check_run "task 0 of 3" "$interrupted" "$array_id" "$merge_id" $((units - done_before - some)) 0
 
 say "passed in $((SECONDS - start)) s"
