@@ -5,14 +5,15 @@
 #
 #   tests/slurm/slurm_study_test.sh SIGNSTIM SOURCE_DIR
 #
-# It submits the small study (tests/app/data/small-study.json) with
-# scripts/slurm/submit-study.sh as a 3-task array plus the dependent merge + verify job, once
-# into one shared folder and once into per-task folders, waits for them, and checks that each
-# merged study equals a single-machine run byte for byte (manifest.json) and verifies, and
-# that every task rendered its own units and no unit twice. Then it cancels a one-task array
-# after its first unit (Slurm's SIGTERM, as at a time limit): no temporary or manifest is
-# left and the merge job is cancelled; submitting again renders only the missing units and
-# gives the same manifest.
+# It submits the small study (tests/app/data/small-study.json) as a 3-task array plus the
+# dependent merge + verify job, once into one shared folder with the two sbatch commands of
+# docs/slurm.md and once into per-task folders with scripts/slurm/submit-study.sh, waits for
+# them, and checks that each merged study equals a single-machine run byte for byte
+# (manifest.json) and verifies, and that every task rendered its own units and no unit twice.
+# Then it cancels a one-task array after its first unit (Slurm's SIGTERM, as at a time
+# limit): no temporary or manifest may be left and the merge job must be cancelled; tasks 1,2
+# of 3 submitted again leave a merge job that fails naming the missing units, and task 0 then
+# finishes the study to the same manifest.
 #
 # Exit status: 0 passed; 1 failed (the jobs' logs are printed); 77 skipped, with the reason:
 # Slurm or munge not installed (scripts/setup.sh --with-slurm), not root, or a daemon that
@@ -229,6 +230,16 @@ submit_study() {  # $1: OUT, $2: tasks, rest: submit-study options; sets array_i
   merge_id=$(awk '$1 == "merge" {print $2}' <<<"$ids")
   [[ $array_id =~ ^[0-9]+$ && $merge_id =~ ^[0-9]+$ ]] || fail "submit-study.sh printed no job ids: $ids"
 }
+submit_by_hand() {  # $1: OUT; the two sbatch commands of docs/slurm.md; sets array_id, merge_id
+  local out=$1 logs=$1.slurm-logs
+  mkdir -p "$logs"
+  array_id=$(env "$marker" sbatch --parsable --array=0-2 --cpus-per-task=1 --output="$logs/array-%A_%a.out" \
+    "--export=ALL,SIGNSTIM=$signstim" "$source_dir/scripts/slurm/study-array.sbatch" "$small" "$out" \
+    --scenes "$scenes" 2>&1) || fail "sbatch of study-array.sbatch failed: $array_id"
+  merge_id=$(env "$marker" sbatch --parsable --dependency="afterok:$array_id" --kill-on-invalid-dep=yes \
+    --output="$logs/merge-%j.out" "--export=ALL,SIGNSTIM=$signstim" "$source_dir/scripts/slurm/study-merge.sbatch" \
+    "$out" 2>&1) || fail "sbatch of study-merge.sbatch failed: $merge_id"
+}
 finished() { [[ $(job_state "$1") =~ ^(COMPLETED|FAILED|CANCELLED|TIMEOUT|NODE_FAIL|OUT_OF_MEMORY|PREEMPTED)$ ]]; }
 all_finished() { local id; for id in "$@"; do finished "$id" || return 1; done; }
 
@@ -265,17 +276,19 @@ check_run() {  # $1: label, $2: OUT, $3: array id, $4: merge id, $5: expected "r
 
 units=$(grep -o '[0-9]* of [0-9]* units rendered' "$work/jobs/reference.out" | cut -d' ' -f1)
 [[ -n $units ]] || { tail_of "$work/jobs/reference.out"; fail "the single-machine run printed no unit count"; }
+# Into one shared folder by hand (signstim takes its shard from Slurm's array variables), and
+# into per-task folders with submit-study.sh.
 shared=$work/shared-study
 per_task=$work/per-task-study
-submit_study "$shared" 3
+submit_by_hand "$shared"
 shared_array=$array_id shared_merge=$merge_id
 submit_study "$per_task" 3 --per-task-folders
 per_task_array=$array_id per_task_merge=$merge_id
-say "submitted: shared folder $shared_array + $shared_merge, per-task folders $per_task_array + $per_task_merge"
+say "submitted: shared folder $shared_array + $shared_merge (by hand), per-task folders $per_task_array + $per_task_merge"
 wait_for 240 all_finished "$shared_merge" "$per_task_merge" ||
   { squeue; tail_of "$shared.slurm-logs"/* "$per_task.slurm-logs"/*; fail "the jobs did not finish within the time limit"; }
 say "both arrays and merge jobs done in $((SECONDS - start)) s"
-check_run "shared folder" "$shared" "$shared_array" "$shared_merge" "$units"
+check_run "shared folder, by hand" "$shared" "$shared_array" "$shared_merge" "$units"
 check_run "per-task folders" "$per_task" "$per_task_array" "$per_task_merge" "$units"
 
 # ---- Slurm's SIGTERM mid-run leaves no broken file; submitting again finishes the rest -----
