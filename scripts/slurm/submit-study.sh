@@ -97,7 +97,8 @@ merge_id=$(sbatch "${common[@]}" --dependency="afterok:$array_id" --kill-on-inva
   --output="$logs/merge-%j.out" "$here/study-merge.sbatch" "$out" "${shards[@]}")
 merge_id=${merge_id%%;*}
 
-say "${only:+tasks $only of }$tasks array tasks of $(basename "$study") into $out; logs in $logs"
+if [[ -n $only ]]; then what="array tasks $only of $tasks"; else what="$tasks array tasks"; fi
+say "$what of $(basename "$study") into $out; logs in $logs"
 say "watch: squeue -j $array_id,$merge_id   result: $logs/merge-$merge_id.out"
 echo "array $array_id"
 echo "merge $merge_id"
