@@ -37,6 +37,30 @@ int createRegistered(const fs::path& path, const fs::path& name) {
     return descriptor;
 }
 
+// Creates a new temporary beside `target` with `create` (0, or the errno of its failing call)
+// under the cleanup lock, registers it and returns its path. A name that exists is passed
+// over: TARGET.tmp-PID-N is unique within one machine, but array tasks on several machines
+// writing one shared folder (docs/slurm.md) can have the same process id — in per-job PID
+// namespaces, the same small one — and all write plan.json when they start.
+template <class Create>
+fs::path createTemporary(const fs::path& target, const fs::path& name, Create create) {
+    for (int attempt = 1;; ++attempt) {
+        fs::path path = temporaryPathFor(target);
+        CleanupLock lock;
+        const int error = create(path);
+        if (error == 0) {
+            lock.addTemporary(path);
+            return path;
+        }
+        if (error != EEXIST || attempt == 1000) throw IoError(name.string(), kCannotWrite, error);
+    }
+}
+
+int openNewFile(const fs::path& path, int& descriptor) {
+    descriptor = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    return descriptor < 0 ? errno : 0;
+}
+
 // Removes a registered temporary, then forgets it. The removal runs without the cleanup lock:
 // removing a large folder (an abandoned or replaced render) can take seconds, and a signal
 // arriving meanwhile must not wait for it. Removing creates nothing, so the design in
@@ -86,8 +110,9 @@ void createParents(const fs::path& dir, const fs::path& name) {
 void probeFolder(const fs::path& dir, const fs::path& name) {
     const fs::path folder = dir.empty() ? fs::path(".") : dir;
     createParents(folder, name);
-    const fs::path probe = temporaryPathFor(folder / ".signstim-write-test");
-    const int descriptor = createRegistered(probe, name);
+    int descriptor = -1;
+    const fs::path probe = createTemporary(folder / ".signstim-write-test", name,
+                                           [&](const fs::path& path) { return openNewFile(path, descriptor); });
     int error = writeAll(descriptor, "x");
     const int closeError = closeChecked(descriptor);
     if (error == 0) error = closeError;
@@ -211,9 +236,8 @@ void writeNewFile(const fs::path& path, std::string_view bytes, const fs::path& 
     lock.removeTemporary(path);
 }
 
-TemporaryFile::TemporaryFile(fs::path target)
-    : target_(std::move(target)), temporary_(temporaryPathFor(target_)) {
-    descriptor_ = createRegistered(temporary_, target_);
+TemporaryFile::TemporaryFile(fs::path target) : target_(std::move(target)) {
+    temporary_ = createTemporary(target_, target_, [&](const fs::path& path) { return openNewFile(path, descriptor_); });
 }
 
 TemporaryFile::~TemporaryFile() {
@@ -244,13 +268,8 @@ TemporaryFolder::TemporaryFolder(fs::path target) : target_(withoutTrailingSepar
     // A mount point (a container's bind mount) cannot be renamed or exchanged, and a sibling
     // would be on another file system: stage inside it instead (not atomic; see commit()).
     inside_ = isMountPoint(target_);
-    temporary_ = temporaryPathFor(inside_ ? target_ / kStagingName : target_);
-    CleanupLock lock;
-    if (::mkdir(temporary_.c_str(), 0777) != 0) {
-        const int error = errno;
-        throw IoError(target_.string(), kCannotWrite, error);
-    }
-    lock.addTemporary(temporary_);
+    temporary_ = createTemporary(inside_ ? target_ / kStagingName : target_, target_,
+                                 [](const fs::path& path) { return ::mkdir(path.c_str(), 0777) == 0 ? 0 : errno; });
 }
 
 TemporaryFolder::~TemporaryFolder() {

@@ -29,6 +29,8 @@ void writeNewFile(const std::filesystem::path& path, std::string_view bytes,
 
 // A temporary name next to `target` (same folder, so rename() is atomic), unique per process
 // and call: TARGET.tmp-HOST-PID-N. Trailing separators of `target` are ignored ("frames/").
+// Not unique across machines that share a folder and a host name, or PID namespaces on one
+// host: TemporaryFile and TemporaryFolder pass over a name that exists.
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 
 // Removes, under `dir`, the temporaries this machine's processes left when they were killed

@@ -5,10 +5,13 @@
 #   ./run.sh test   (install what is missing, build, run the whole test suite)
 # inside it, printing the time of each and the last lines of a failure.
 #
-# Usage: scripts/check-fresh-machine.sh [--preflight] [--keep] [--no-cache]
+# Usage: scripts/check-fresh-machine.sh [--preflight] [--keep] [--no-cache] [--with-slurm]
 #   --preflight  only say whether the check can run here (exit 0) or why not (exit 77)
 #   --keep       keep the root afterwards (its path is printed)
 #   --no-cache   rebuild the bare root with debootstrap even when a cached one exists
+#   --with-slurm between the two commands, also `scripts/setup.sh --with-slurm` (the optional
+#                Slurm and munge packages), so that the test of the Slurm scripts runs in the
+#                root instead of being skipped
 #
 # The mirror comes from this machine's own apt configuration (never a host written here).
 # The bare root (nothing but debootstrap's minbase) is cached as a tarball under
@@ -18,13 +21,14 @@
 # 77 the check cannot run here (not root, no debootstrap, mirror unreachable).
 set -euo pipefail
 
-preflight=0 keep=0 use_cache=1
+preflight=0 keep=0 use_cache=1 with_slurm=0
 for arg in "$@"; do
   case "$arg" in
     --preflight) preflight=1 ;;
     --keep) keep=1 ;;
     --no-cache) use_cache=0 ;;
-    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --with-slurm) with_slurm=1 ;;
+    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "check-fresh-machine: unknown option '$arg' (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -162,6 +166,7 @@ run_in_root() {  # $1: label, rest: the command, in the clone
 times=()
 failed=0
 run_in_root "main-job" ./run.sh || failed=1
+if ((with_slurm)) && ! ((failed)); then run_in_root "slurm-packages" scripts/setup.sh --with-slurm || failed=1; fi
 ((failed)) || run_in_root "test-suite" ./run.sh test || failed=1
 
 say "times on this machine ($(nproc) cores):"

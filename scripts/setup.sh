@@ -2,7 +2,23 @@
 # Installs the Debian 12 packages signstim needs, only those that are missing.
 # Idempotent; runs apt-get as root, or through sudo when not root. Prints what it installs
 # and that it is done; apt's own output goes to a log, shown only when apt fails.
+#
+# Usage: scripts/setup.sh [--with-slurm]
+#   --with-slurm  also Slurm and munge (slurm-wlm munge, ~13 MB), only for the test of the
+#                 Slurm scripts (tests/slurm, docs/slurm.md), which is skipped without them.
+#                 Not by default: they are daemons (on a systemd machine their services are
+#                 enabled on install), and on a cluster's login node Debian's sbatch could
+#                 shadow the site's own Slurm.
 set -euo pipefail
+
+with_slurm=0
+for arg in "$@"; do
+  case "$arg" in
+    --with-slurm) with_slurm=1 ;;
+    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "setup: unknown option '$arg' (see --help)" >&2; exit 1 ;;
+  esac
+done
 
 packages=(
   build-essential cmake pkg-config git
@@ -22,6 +38,7 @@ packages=(
   # skipped, not passed, without these.
   chromium chromium-driver python3-selenium
 )
+((with_slurm)) && packages+=(slurm-wlm munge)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -56,6 +56,37 @@ TEST(AtomicFile, UncommittedTemporaryLeavesNothingBehind) {
     EXPECT_EQ(fileCount(dir), 0u);
 }
 
+// Array tasks on several machines writing one shared study folder can have the same process
+// id: the name this process would use next may be another machine's temporary. It is passed
+// over and left alone, for files and for folders.
+TEST(AtomicFile, TemporaryNameHeldByAnotherMachineIsPassedOver) {
+    const fs::path dir = freshDir("taken");
+    fs::create_directories(dir);
+    const auto nextTemporary = [](const fs::path& target) {  // TARGET.tmp-PID-N, N one ahead
+        const std::string name = temporaryPathFor(target).filename().string();
+        const std::size_t dash = name.rfind('-');
+        return target.parent_path() / (name.substr(0, dash + 1) + std::to_string(std::stoul(name.substr(dash + 1)) + 1));
+    };
+    const fs::path plan = dir / "plan.json";
+    const fs::path takenFile = nextTemporary(plan);
+    std::ofstream(takenFile) << "another machine's";
+    writeFileAtomic(plan, "mine");
+    EXPECT_EQ(readAll(plan), "mine");
+    EXPECT_EQ(readAll(takenFile), "another machine's");
+
+    const fs::path frames = dir / "frames";
+    const fs::path takenFolder = nextTemporary(frames);
+    fs::create_directory(takenFolder);
+    {
+        TemporaryFolder folder(frames);
+        writeNewFile(folder.path() / "frame_00001.png", "x");
+        folder.commit();
+    }
+    EXPECT_EQ(readAll(frames / "frame_00001.png"), "x");
+    EXPECT_TRUE(fs::is_directory(takenFolder));
+    EXPECT_EQ(fileCount(dir), 4u);  // plan.json, frames, and the two that are not ours
+}
+
 TEST(AtomicFile, UnwritableDirectoryNamesThePath) {
     const fs::path dir = freshDir("blocked");
     fs::create_directories(dir);
