@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages signstim needs, only those that are missing.
+# Installs the Debian 12 packages signstim needs, only those that are missing, then jsPsych
+# (scripts/fetch-jspsych.sh: pinned npm tarballs, SHA-512 checked, into third_party/jspsych/).
 # Idempotent; runs apt-get as root, or through sudo when not root. Prints what it installs
 # and that it is done; apt's own output goes to a log, shown only when apt fails.
 set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 packages=(
   build-essential cmake pkg-config git
@@ -18,7 +20,16 @@ packages=(
   # headless Chromium and plays every clip; it runs with Debian's /usr/bin/python3 and is
   # skipped, not passed, without these.
   chromium chromium-driver python3-selenium
+  # scripts/fetch-jspsych.sh downloads jsPsych for `study --experiment jspsych` (HTTPS).
+  curl ca-certificates
 )
+
+# jsPsych is needed only by `signstim study --experiment jspsych`: without a network it is a
+# warning, and everything else still builds and runs (that test is then skipped).
+fetch_jspsych() {
+  scripts/fetch-jspsych.sh ||
+    echo "setup: warning: jsPsych was not fetched; \`signstim study --experiment jspsych\` needs it (run scripts/fetch-jspsych.sh)" >&2
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -29,6 +40,7 @@ done
 
 if ((${#missing[@]} == 0)); then
   echo "setup: all ${#packages[@]} Debian packages present."
+  fetch_jspsych
   exit 0
 fi
 
@@ -53,4 +65,5 @@ if ! { "${sudo[@]}" apt-get update -q && \
   exit 1
 fi
 rm -f "$log"
+fetch_jspsych
 echo "setup: done."
