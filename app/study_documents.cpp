@@ -1,6 +1,7 @@
 #include "app/study_documents.hpp"
 
 #include "stimuli/review_page.hpp"
+#include "stimuli/study_experiment.hpp"
 #include "stimuli/study_exports.hpp"
 
 namespace signstim::app {
@@ -20,6 +21,15 @@ std::vector<StudyDocument> studyDocuments(const stimuli::StudyListing& listing) 
             documents.push_back({folder + id + "_likert-response-sheet.html", "sheet", id,
                                  stimuli::likertResponseSheetHtml(listing, p)});
     }
+    return documents;
+}
+
+std::vector<StudyDocument> experimentDocuments(const stimuli::StudyListing& listing, const JspsychBundle& jspsych) {
+    std::vector<StudyDocument> documents;
+    for (stimuli::ExperimentFile& file : stimuli::jspsychExperimentFiles(listing))
+        documents.push_back({std::move(file.path), "experiment", std::move(file.participant), std::move(file.contents)});
+    for (const JspsychBundle::File& file : jspsych.files)
+        documents.push_back({file.path, "experiment-library", "", file.contents});
     return documents;
 }
 
