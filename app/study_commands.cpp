@@ -109,8 +109,7 @@ void registerStudyCommands(Commands& commands) {
                       "jspsych: also write experiment/, a jsPsych 8 experiment that runs each participant's session from\n"
                       "disk or any web server and saves their answers as CSV (docs/experiment.md; needs jsPsych, fetched by\n"
                       "scripts/setup.sh). none: no experiment, whatever the study file's outputs.experiment says")
-        ->check(CLI::IsMember({"jspsych", "none"}))
-        ->excludes(check);
+        ->check(CLI::IsMember({"jspsych", "none"}));
     study->add_option("--jobs", o->jobs,
                       "Encoders running at once beside the renderer (default: the machine's cores; at least the number of versions)")
         ->check(CLI::Range(1u, 256u));
