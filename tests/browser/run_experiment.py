@@ -47,6 +47,7 @@ import tempfile
 import threading
 import time
 
+sys.dont_write_bytecode = True  # importing the review-page checker leaves no __pycache__ in the source tree
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from check_review_page import INSTALL_HINT, SKIP, find_program, kill_tree  # noqa: E402
 
