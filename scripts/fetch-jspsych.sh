@@ -37,14 +37,23 @@ read -r _ jspsych_version _ <<<"${pins[0]}"
 say() { echo "fetch-jspsych: $*"; }
 fail() { echo "fetch-jspsych: $*" >&2; exit 1; }
 
-# The stamp lists the pins the folder was filled from; the licence is part of it, so a changed
-# notice is copied again.
+# The stamp (PINS.txt, copied into every study's experiment/jspsych/) lists the pins the folder
+# was filled from, and the licence notice's digest, so that a changed notice is copied again.
 stamp_text() {
+  echo "# npm package, version, SHA-512 integrity of its tarball (checked by signstim's scripts/fetch-jspsych.sh)"
   printf '%s\n' "${pins[@]}"
-  sha512sum "$licence" | cut -d' ' -f1
+  echo "# LICENSE.txt sha512 $(sha512sum "$licence" | cut -d' ' -f1)"
+}
+complete() {  # the folder holds these pins, and their files are still there
+  [[ -f $into/PINS.txt && -f $into/LICENSE.txt ]] && [[ $(cat "$into/PINS.txt") == "$(stamp_text)" ]] || return 1
+  local pin name
+  for pin in "${pins[@]}"; do
+    read -r name _ <<<"$pin"
+    [[ -f $into/${name#@jspsych/}/package.json && -f $into/${name#@jspsych/}/dist/index.browser.js ]] || return 1
+  done
 }
 [[ -f $licence ]] || fail "$licence is missing (it is part of the repository)"
-if [[ -f $into/PINS.txt ]] && [[ $(cat "$into/PINS.txt") == "$(stamp_text)" ]]; then
+if complete; then
   say "jsPsych $jspsych_version and $(( ${#pins[@]} - 1 )) plugins present in ${into#"$repo"/}"
   exit 0
 fi
