@@ -27,6 +27,7 @@ struct StudyCommandOptions {
     bool quick = false;
     bool check = false;
     bool frames = false;
+    std::string experiment;
     unsigned jobs = 0;
     std::string shard;
     std::string device;
@@ -42,6 +43,7 @@ StudyRunOptions runOptions(const StudyCommandOptions& o) {
     r.quick = o.quick;
     r.jobs = o.jobs;
     r.pngFrames = o.frames;
+    r.experiment = o.experiment;
     r.device = o.device;
     r.scenesDir = o.scenesDir;
     r.lexicon = o.lexicon;
@@ -60,6 +62,9 @@ void printSummary(const StudyRunOptions& r, const StudyRunReport& report) {
         std::printf("study complete: review page %s\n  manifest %s; check it with `signstim study verify %s`\n",
                     (r.out / "index.html").string().c_str(), (r.out / "manifest.json").string().c_str(),
                     r.out.string().c_str());
+        if (report.experiment)
+            std::printf("  jsPsych experiment %s?participant=%s (docs/experiment.md)\n",
+                        (r.out / "experiment" / "index.html").string().c_str(), report.firstParticipant.c_str());
     } else {
         std::printf("%zu of %zu units are still missing (other shards); when every shard has finished, run\n"
                     "  signstim study merge %s [OTHER-SHARD-FOLDERS...]\n",
@@ -82,11 +87,13 @@ void registerStudyCommands(Commands& commands) {
         "study",
         "The main job: a study file (docs/study.md) -> every stimulus clip (12 stories x 4 versions,\n"
         "side-by-side clips of the 4 versions), every participant's schedule, exports for PsychoPy,\n"
-        "OpenSesame, Gorilla and jsPsych, a manifest and a review page (index.html), in one folder.\n"
+        "OpenSesame, Gorilla and jsPsych, a manifest and a review page (index.html), in one folder;\n"
+        "with --experiment jspsych also a ready-to-run jsPsych experiment (experiment/index.html).\n"
         "Without FILE: the default study, SCENES/studies/default.json.\n"
         "A re-run skips what is complete and unchanged; an interrupted run leaves no broken file.\n"
         "Examples:\n"
         "  signstim study --out my-study --quick        (small and fast: look at index.html)\n"
+        "  signstim study --out my-study --quick --experiment jspsych   (then open experiment/index.html)\n"
         "  signstim study my-study.json --check\n"
         "  signstim study my-study.json --out out/ --jobs 8\n"
         "  signstim study my-study.json --out out/ --shard 0/4    (one of 4 machines; then `study merge`)\n"
@@ -98,6 +105,11 @@ void registerStudyCommands(Commands& commands) {
     study->add_flag("--quick", o->quick,
                     "Render with the study's quick settings (default 320x240, 15 fps, MSAA 1): minutes, for a first look");
     study->add_flag("--frames", o->frames, "Also write each clip's PNG frames (frames/...)");
+    study->add_option("--experiment", o->experiment,
+                      "jspsych: also write experiment/, a jsPsych 8 experiment that runs each participant's session from\n"
+                      "disk or any web server and saves their answers as CSV (docs/experiment.md; needs jsPsych, fetched by\n"
+                      "scripts/setup.sh). none: no experiment, whatever the study file's outputs.experiment says")
+        ->check(CLI::IsMember({"jspsych", "none"}));
     study->add_option("--jobs", o->jobs,
                       "Encoders running at once beside the renderer (default: the machine's cores; at least the number of versions)")
         ->check(CLI::Range(1u, 256u));
@@ -133,10 +145,14 @@ void registerStudyCommands(Commands& commands) {
         "exports, review page, manifest. With shards writing to one shared folder, give just that folder.");
     merge->add_option("DIR", *mergeDirs, "Study folders of the shards")->required();
     merge->add_option("--into", *mergeInto, "Folder to merge into (default: the first DIR)");
-    merge->callback([mergeDirs, mergeInto, o] {
+    auto mergeExperiment = std::make_shared<std::string>();
+    merge->add_option("--experiment", *mergeExperiment,
+                      "jspsych: also write the jsPsych experiment (written anyway when a shard's run asked for it)")
+        ->check(CLI::IsMember({"jspsych"}));
+    merge->callback([mergeDirs, mergeInto, mergeExperiment, o] {
         std::vector<fs::path> dirs(mergeDirs->begin(), mergeDirs->end());
         const fs::path target = mergeInto->empty() ? dirs.front() : fs::path(*mergeInto);
-        const StudyRunReport report = mergeStudyFolders(dirs, target, o->quiet);
+        const StudyRunReport report = mergeStudyFolders(dirs, target, o->quiet, *mergeExperiment);
         if (!report.complete) {
             std::string message = std::to_string(report.missing.size()) + " of " + std::to_string(report.units) +
                                   " units are in none of the folders:";
@@ -145,6 +161,9 @@ void registerStudyCommands(Commands& commands) {
         }
         std::printf("%s: complete: review page %s; check it with `signstim study verify %s`\n", target.string().c_str(),
                     (target / "index.html").string().c_str(), target.string().c_str());
+        if (report.experiment)
+            std::printf("  jsPsych experiment %s?participant=%s (docs/experiment.md)\n",
+                        (target / "experiment" / "index.html").string().c_str(), report.firstParticipant.c_str());
     });
 
     study->callback([o, study] {

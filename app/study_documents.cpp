@@ -1,6 +1,7 @@
 #include "app/study_documents.hpp"
 
 #include "stimuli/review_page.hpp"
+#include "stimuli/study_experiment.hpp"
 #include "stimuli/study_exports.hpp"
 
 namespace signstim::app {
@@ -24,6 +25,19 @@ std::vector<StudyDocument> studyDocuments(const stimuli::StudyListing& listing) 
                                  stimuli::likertResponseSheetHtml(listing, p),
                                  id + "'s phase-2 response sheet (printable; no mapping shown)"});
     }
+    return documents;
+}
+
+std::vector<StudyDocument> experimentDocuments(const stimuli::StudyListing& listing, const JspsychBundle& jspsych) {
+    std::vector<StudyDocument> documents;
+    for (stimuli::ExperimentFile& file : stimuli::jspsychExperimentFiles(listing)) {
+        std::string shows = file.participant.empty() ? "the jsPsych experiment (docs/experiment.md)"
+                                                     : file.participant + "'s session data for the jsPsych experiment";
+        documents.push_back({std::move(file.path), "experiment", std::move(file.participant), std::move(file.contents),
+                             std::move(shows)});
+    }
+    for (const JspsychBundle::File& file : jspsych.files)
+        documents.push_back({file.path, "experiment-library", "", file.contents, "jsPsych 8 (pinned; third_party/jspsych)"});
     return documents;
 }
 

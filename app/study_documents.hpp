@@ -4,6 +4,7 @@
 // kind (for the manifest) and its contents, written by the study runner through the atomic
 // writer. Everything here is computed from the listing alone, so any run that completes a
 // study (or a merge of shards) writes the same bytes.
+#include "app/jspsych_bundle.hpp"
 #include "stimuli/study_listing.hpp"
 
 #include <string>
@@ -15,10 +16,14 @@ struct StudyDocument {
     std::string path;         // relative to the study folder, '/' separators
     std::string kind;         // "conditions", "jspsych", "overview", "sheet", "review", ...
     std::string participant;  // "P03" for a participant's file, else empty
-    std::string contents;
+    std::string contents;     // bytes: text, or a copied library file
     std::string shows;        // what it is, for the manifest
 };
 
 std::vector<StudyDocument> studyDocuments(const stimuli::StudyListing& listing);
+
+// The jsPsych experiment (stimuli/study_experiment.hpp): its own files (kind "experiment") and
+// the jsPsych files copied from `jspsych` (kind "experiment-library").
+std::vector<StudyDocument> experimentDocuments(const stimuli::StudyListing& listing, const JspsychBundle& jspsych);
 
 }  // namespace signstim::app

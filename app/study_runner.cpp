@@ -2,6 +2,7 @@
 
 #include "app/cli_values.hpp"
 #include "app/clip_output.hpp"
+#include "app/jspsych_bundle.hpp"
 #include "app/story_world.hpp"
 #include "app/study_documents.hpp"
 #include "common/atomic_file.hpp"
@@ -18,6 +19,7 @@
 #include "stimuli/scenes_path.hpp"
 #include "stimuli/story.hpp"
 #include "stimuli/study.hpp"
+#include "stimuli/study_experiment.hpp"
 #include "stimuli/timeline.hpp"
 
 #include <sys/resource.h>
@@ -71,6 +73,7 @@ struct LoadedStudy {
     StudyRenderSettings settings;
     render::FrameRate frameRate;
     bool pngFrames = false;
+    std::string experiment;  // "jspsych"; "none" or "": none (decided by useExperiment)
     StudyListing listing;
     std::string dataHash;  // everything every unit depends on
     std::vector<Unit> units;
@@ -150,6 +153,7 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
         throw InputError(study.file, s.settings.fpsLine, fpsField, e.detail());
     }
     s.pngFrames = options.pngFrames || study.pngFrames;
+    s.experiment = options.experiment.empty() ? study.experiment : options.experiment;  // may still be "" or "none"
     s.listing = planStudy(s.study, s.stories, s.phase2 ? &*s.phase2 : nullptr, SIGNSTIM_VERSION, s.pngFrames);
     // The plan must not depend on where the study file was named from (shards, merges).
     s.listing.studyFile = fs::path(study.file).filename().string();
@@ -177,6 +181,24 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
 }
 
 std::vector<VerbVersion> studyVersions(const LoadedStudy& s) { return s.study.versions; }
+
+// Settles whether the experiment is written: the command line, else the study file, else what the
+// run that wrote `previous` (the folder's plan) decided, so that a resumed or repeated run keeps
+// it. Checks that the study fits the experiment's results: columns q1 ... q4 (docs/experiment.md),
+// said now rather than after the clips.
+void useExperiment(LoadedStudy& s, const std::string& previous) {
+    if (s.experiment.empty()) s.experiment = previous;
+    if (s.experiment == "none") s.experiment.clear();
+    if (s.experiment.empty()) return;
+    const StudyFile& study = s.study;
+    for (std::size_t i = 0; i < s.stories.size(); ++i)
+        if (s.stories[i].questions.size() > kExperimentMaxQuestions)
+            throw InputError(study.file, study.stories[i].line, "/stories/" + std::to_string(i),
+                             "\"" + study.stories[i].written + "\" has " + std::to_string(s.stories[i].questions.size()) +
+                                 " questions; the jsPsych experiment's results have columns for " +
+                                 std::to_string(kExperimentMaxQuestions) +
+                                 " (q1-q4): give each story at most 4, or leave out the experiment");
+}
 
 // The story a unit tells: a phase-1 story whole, or the one phase-2 sentence.
 Story unitStory(const LoadedStudy& s, const Unit& unit) {
@@ -640,12 +662,20 @@ std::map<std::string, std::string> planHashes(const json& plan) {
 }
 
 void writeFinalFiles(const fs::path& dir, const json& plan, const StudyListing& listing, const std::vector<json>& records,
-                     StudyRunReport& report) {
+                     const JspsychBundle* jspsych, StudyRunReport& report) {
     const auto start = Clock::now();
     json files = json::array();
     for (const json& record : records)
         for (const json& f : record["files"]) files.push_back(f);
-    for (const StudyDocument& document : studyDocuments(listing)) {
+    std::vector<StudyDocument> documents = studyDocuments(listing);
+    if (jspsych) {
+        std::vector<StudyDocument> experiment = experimentDocuments(listing, *jspsych);
+        documents.insert(documents.end(), std::make_move_iterator(experiment.begin()),
+                         std::make_move_iterator(experiment.end()));
+        report.experiment = true;
+        if (!listing.participants.empty()) report.firstParticipant = listing.participants.front().id;
+    }
+    for (const StudyDocument& document : documents) {
         writeFileAtomic(dir / document.path, document.contents);
         json entry;
         entry["path"] = document.path;
@@ -685,7 +715,15 @@ json makePlan(const LoadedStudy& s) {
     for (const Unit& u : s.units) units.push_back({{"id", u.id}, {"inputHash", unitInputHash(s, u)}});
     plan["units"] = units;
     plan["listing"] = listingToJson(s.listing);
+    // Not part of what a unit depends on: a re-run with another choice only rewrites the documents.
+    if (!s.experiment.empty()) plan["outputs"] = {{"experiment", s.experiment}};
     return plan;
+}
+
+// "jspsych" when the run that wrote `plan` asked for the experiment, else empty.
+std::string planExperiment(const json& plan) {
+    if (!plan.contains("outputs") || !plan["outputs"].is_object()) return "";
+    return plan["outputs"].value("experiment", "");
 }
 
 json readPlan(const fs::path& dir) {
@@ -699,14 +737,15 @@ json readPlan(const fs::path& dir) {
     return source.root;
 }
 
-// Writes the documents and manifest when every unit is complete.
-void finishIfComplete(const fs::path& dir, const json& plan, StudyRunReport& report) {
+// Writes the documents and manifest when every unit is complete (and the experiment with them
+// when `jspsych` is given).
+void finishIfComplete(const fs::path& dir, const json& plan, const JspsychBundle* jspsych, StudyRunReport& report) {
     std::vector<json> records;
     const StudyListing listing = completedListing(dir, listingFromJson(plan.at("listing"), (dir / kPlanFile).string()),
                                                   planHashes(plan), report.missing, records);
     report.units = planHashes(plan).size();
     report.complete = report.missing.empty();
-    if (report.complete) writeFinalFiles(dir, plan, listing, records, report);
+    if (report.complete) writeFinalFiles(dir, plan, listing, records, jspsych, report);
 }
 
 }  // namespace
@@ -737,7 +776,8 @@ std::pair<std::size_t, std::size_t> shardFromEnvironment() {
 }
 
 void checkStudy(const StudyRunOptions& options) {
-    const LoadedStudy s = loadStudy(options);
+    LoadedStudy s = loadStudy(options);
+    useExperiment(s, "");
     double storySeconds = 0.0, likertSeconds = 0.0;
     for (const Unit& unit : s.units) {
         const Story story = unitStory(s, unit);
@@ -756,19 +796,23 @@ void checkStudy(const StudyRunOptions& options) {
 StudyRunReport runStudy(const StudyRunOptions& options) {
     const auto start = Clock::now();
     StudyRunReport report;
-    const LoadedStudy s = loadStudy(options);
+    LoadedStudy s = loadStudy(options);
     const fs::path& dir = options.out;
+    const std::optional<json> old = fs::exists(dir / kPlanFile) ? std::optional<json>(readPlan(dir)) : std::nullopt;
+    useExperiment(s, old ? planExperiment(*old) : "");
+    // Found and read before the first frame: a missing jsPsych fails now, not after the clips.
+    const std::optional<JspsychBundle> jspsych =
+        s.experiment.empty() ? std::nullopt : std::optional<JspsychBundle>(loadJspsychBundle());
     ensureWritableDirectory(dir);
     // What a run killed outright (SIGKILL, a node lost) left behind on this machine.
     if (const std::size_t stale = removeStaleTemporaries(dir); stale > 0 && !options.quiet)
         std::fprintf(stderr, "signstim study: removed %zu temporar%s left by a killed run\n", stale, stale == 1 ? "y" : "ies");
     const json plan = makePlan(s);
-    if (const fs::path planFile = dir / kPlanFile; fs::exists(planFile)) {
+    if (old) {
         // A folder of another study is not overwritten unit by unit: that would mix two studies.
-        const json old = readPlan(dir);
-        if (old.at("listing").value("designHash", "") != s.listing.designHash)
+        if (old->at("listing").value("designHash", "") != s.listing.designHash)
             throw InputError(dir.string(), 0, "--out",
-                             "holds another study (design " + old.at("listing").value("designHash", "").substr(0, 12) +
+                             "holds another study (design " + old->at("listing").value("designHash", "").substr(0, 12) +
                                  ", this one " + s.listing.designHash.substr(0, 12) + "): choose a new folder");
     }
     writeFileAtomic(dir / kPlanFile, plan.dump(2) + "\n");
@@ -839,7 +883,7 @@ StudyRunReport runStudy(const StudyRunOptions& options) {
         renderer.finishAll(report);
         progress.end();
     }
-    finishIfComplete(dir, plan, report);
+    finishIfComplete(dir, plan, jspsych ? &*jspsych : nullptr, report);
     report.totalSeconds = secondsSince(start);
     return report;
 }
@@ -901,12 +945,20 @@ std::vector<std::string> verifyStudyFolder(const fs::path& dir, bool quiet) {
     return problems;
 }
 
-StudyRunReport mergeStudyFolders(const std::vector<fs::path>& sources, const fs::path& target, bool quiet) {
+StudyRunReport mergeStudyFolders(const std::vector<fs::path>& sources, const fs::path& target, bool quiet,
+                                 const std::string& experiment) {
     StudyRunReport report;
     const auto start = Clock::now();
     // The plan: the target's, else the first source's; every source must hold the same study.
     std::optional<json> plan;
     fs::path planFrom;
+    // Shards of one study may differ in whether they asked for the experiment; the merge writes
+    // it when any of them (or `experiment`) did.
+    std::string wantedExperiment = experiment == "none" ? "" : experiment;
+    const auto withoutOutputs = [](json p) {
+        p.erase("outputs");
+        return p;
+    };
     for (const fs::path& dir : [&] {
              std::vector<fs::path> all{target};
              all.insert(all.end(), sources.begin(), sources.end());
@@ -914,16 +966,21 @@ StudyRunReport mergeStudyFolders(const std::vector<fs::path>& sources, const fs:
          }()) {
         if (!fs::exists(dir / kPlanFile)) continue;
         const json p = readPlan(dir);
+        if (wantedExperiment.empty()) wantedExperiment = planExperiment(p);
         if (!plan) {
             plan = p;
             planFrom = dir;
-        } else if (p != *plan) {
+        } else if (withoutOutputs(p) != withoutOutputs(*plan)) {
             throw InputError(dir.string(), 0, "",
                              "holds a different study (or the same with other settings) than " + planFrom.string() +
                                  ": merge the shards of one run of one study file");
         }
     }
     if (!plan) throw InputError(sources.front().string(), 0, "", "not a study folder (no .signstim/plan.json)");
+    plan->erase("outputs");
+    if (!wantedExperiment.empty()) (*plan)["outputs"] = {{"experiment", wantedExperiment}};
+    const std::optional<JspsychBundle> jspsych =
+        wantedExperiment.empty() ? std::nullopt : std::optional<JspsychBundle>(loadJspsychBundle());
     ensureWritableDirectory(target);
     removeStaleTemporaries(target);
     writeFileAtomic(target / kPlanFile, plan->dump(2) + "\n");
@@ -956,7 +1013,7 @@ StudyRunReport mergeStudyFolders(const std::vector<fs::path>& sources, const fs:
             break;
         }
     }
-    finishIfComplete(target, *plan, report);
+    finishIfComplete(target, *plan, jspsych ? &*jspsych : nullptr, report);
     report.rendered = copied;
     report.totalSeconds = secondsSince(start);
     if (!quiet) std::fprintf(stderr, "signstim study merge: %zu unit%s copied into %s\n", copied, copied == 1 ? "" : "s",

@@ -26,6 +26,7 @@ struct StudyRunOptions {
     unsigned jobs = 0;                // encoders at once; 0: the machine's cores
     std::size_t shardIndex = 0, shardCount = 1;
     bool pngFrames = false;           // also PNG frames (or the study file's outputs.pngFrames)
+    std::string experiment;           // "jspsych": also experiment/ (or the study file's outputs.experiment)
     bool shareFrames = true;          // false: every version drawn in full (the naive cost, for bench)
     std::string device;
     std::string scenesDir;
@@ -41,6 +42,8 @@ struct StudyRunReport {
     double timelineSeconds = 0.0, renderSeconds = 0.0, encodeWaitSeconds = 0.0, writeSeconds = 0.0;
     double totalSeconds = 0.0;
     bool complete = false;             // every unit of the study is there (exports and manifest written)
+    bool experiment = false;           // experiment/ was written with them
+    std::string firstParticipant;      // "P01", for the message that says how to open it
     std::vector<std::string> missing;  // units not complete yet (other shards)
 };
 
@@ -55,10 +58,12 @@ StudyRunReport runStudy(const StudyRunOptions& options);
 std::vector<std::string> verifyStudyFolder(const std::filesystem::path& dir, bool quiet);
 
 // Copies the units of `sources` missing from `target` (which may be one of them), checking
-// each file's SHA-256 against its record, then writes the exports, review page and manifest.
-// Throws InputError when the folders hold different studies or units are missing.
+// each file's SHA-256 against its record, then writes the exports, review page and manifest,
+// and the jsPsych experiment when `experiment` is "jspsych" or any of the folders' runs asked
+// for it. Throws InputError when the folders hold different studies or units are missing.
 StudyRunReport mergeStudyFolders(const std::vector<std::filesystem::path>& sources,
-                                 const std::filesystem::path& target, bool quiet);
+                                 const std::filesystem::path& target, bool quiet,
+                                 const std::string& experiment = "");
 
 // "2/8" -> {2, 8}: shard I of N, 0-based (I = SLURM_ARRAY_TASK_ID of `sbatch --array=0-(N-1)`).
 // Throws InputError naming --shard (exit 1).

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages signstim needs, only those that are missing.
+# Installs the Debian 12 packages signstim needs, only those that are missing, then jsPsych
+# (scripts/fetch-jspsych.sh: pinned npm tarballs, SHA-512 checked, into third_party/jspsych/).
 # Idempotent; runs apt-get as root, or through sudo when not root. Prints what it installs
 # and that it is done; apt's own output goes to a log, shown only when apt fails.
 #
@@ -10,6 +11,7 @@
 #                 enabled on install), and on a cluster's login node Debian's sbatch could
 #                 shadow the site's own Slurm.
 set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 with_slurm=0
 for arg in "$@"; do
@@ -37,8 +39,17 @@ packages=(
   # headless Chromium and plays every clip; it runs with Debian's /usr/bin/python3 and is
   # skipped, not passed, without these.
   chromium chromium-driver python3-selenium
+  # scripts/fetch-jspsych.sh downloads jsPsych for `study --experiment jspsych` (HTTPS).
+  curl ca-certificates
 )
 ((with_slurm)) && packages+=(slurm-wlm munge)
+
+# jsPsych is needed only by `signstim study --experiment jspsych`: without a network it is a
+# warning, and everything else still builds and runs (that test is then skipped).
+fetch_jspsych() {
+  scripts/fetch-jspsych.sh ||
+    echo "setup: warning: jsPsych was not fetched; \`signstim study --experiment jspsych\` needs it (run scripts/fetch-jspsych.sh)" >&2
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -49,6 +60,7 @@ done
 
 if ((${#missing[@]} == 0)); then
   echo "setup: all ${#packages[@]} Debian packages present."
+  fetch_jspsych
   exit 0
 fi
 
@@ -73,4 +85,5 @@ if ! { "${sudo[@]}" apt-get update -q && \
   exit 1
 fi
 rm -f "$log"
+fetch_jspsych
 echo "setup: done."

@@ -40,11 +40,20 @@ public:
         if (root.contains("quick")) study_.quick = readRender(root["quick"], "/quick", study_.quick);
         if (root.contains("outputs")) {
             const json& outputs = root["outputs"];
-            if (!outputs.is_object()) source_.failAt("/outputs", "expected {\"pngFrames\": false}");
-            knownKeys(outputs, "/outputs", {"pngFrames"});
+            if (!outputs.is_object())
+                source_.failAt("/outputs", "expected {\"pngFrames\": false, \"experiment\": \"jspsych\"}");
+            knownKeys(outputs, "/outputs", {"pngFrames", "experiment"});
             if (outputs.contains("pngFrames")) {
                 if (!outputs["pngFrames"].is_boolean()) source_.failAt("/outputs/pngFrames", "expected true or false");
                 study_.pngFrames = outputs["pngFrames"].get<bool>();
+            }
+            if (outputs.contains("experiment")) {
+                const json& experiment = outputs["experiment"];
+                const std::string name = experiment.is_string() ? experiment.get<std::string>() : "";
+                if (name != "jspsych" && name != "none")
+                    source_.failAt("/outputs/experiment",
+                                   "expected \"jspsych\" (a ready-to-run jsPsych experiment, docs/experiment.md) or \"none\"");
+                study_.experiment = name;
             }
         }
         if (root.contains("notes") && !root["notes"].is_string()) source_.failAt("/notes", "expected text");

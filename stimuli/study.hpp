@@ -53,6 +53,7 @@ struct StudyFile {
     StudyRenderSettings render;                 // full quality
     StudyRenderSettings quick{320, 240, "15", 0, 1, 1.0};
     bool pngFrames = false;                     // also write each clip's PNG frames
+    std::string experiment;                     // outputs.experiment: "jspsych" (docs/experiment.md), "none", or "" (not said)
     int participantsLine = 0, storiesLine = 0, versionsLine = 0;
 
     StudyDesignSpec designSpec() const;

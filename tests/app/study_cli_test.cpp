@@ -3,6 +3,7 @@
 // under the validation layer into playable MP4s, posters, exports and a manifest; a re-run
 // skips everything; verify catches a changed byte; shards merged equal one run byte for byte;
 // an interrupted run leaves no broken file and resumes to the same bytes.
+#include "stimuli/study_experiment.hpp"
 #include "tests/app/run_command.hpp"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -69,6 +71,7 @@ TEST(StudyCli, BadStudyFilesAreRefusedNamingFileLineAndField) {
         {"\"96x72\"", "\"95x72\"", "/render/size"},
         {"\"participants\": 4", "\"participants\": 0", "/participants"},
         {"\"seed\": 7", "\"seed\": 7, \"sead\": 8", "unknown field 'sead'"},
+        {"\"notes\"", "\"outputs\": {\"experiment\": \"psychopy\"}, \"notes\"", "/outputs/experiment"},
         {"[1, 4, 6, 8]", "[1, 4, 6, 9]", "sentence 9 does not exist"},
         {"[1, 4, 6, 8]", "[1, 4, 6]", "3 side-by-side sentences cannot put every version in every panel equally often"},
     };
@@ -218,6 +221,75 @@ TEST(StudyCli, InterruptedRunLeavesNoBrokenFileAndResumesToTheSameBytes) {
     const auto resumed = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(dir.string())));
     ASSERT_EQ(resumed.status, 0) << resumed.output;
     EXPECT_EQ(readFile(dir / "manifest.json"), readFile(reference / "manifest.json"));
+}
+
+// A stand-in for third_party/jspsych (what scripts/fetch-jspsych.sh unpacks): every file the
+// experiment copies, with bytes that are easy to recognise and not all text, so this test needs
+// no network. The real packages run in Chromium in study_browser_test.cpp.
+fs::path fakeJspsych() {
+    const fs::path dir = freshDir("fake-jspsych");
+    for (const signstim::stimuli::ExperimentLibraryFile& file : signstim::stimuli::jspsychLibraryFiles()) {
+        fs::create_directories((dir / file.source).parent_path());
+        std::ofstream(dir / file.source, std::ios::binary) << "fake " << file.source << '\n' << std::string(1, '\0') << "\xff";
+    }
+    return dir;
+}
+
+TEST(StudyCli, ExperimentWithoutJsPsychFailsBeforeRenderingAndSaysHowToGetIt) {
+    const fs::path dir = freshDir("no-jspsych");
+    const auto r = runSignstim(study(shellQuote(kSmall) + " --quiet --experiment jspsych --out " + shellQuote(dir.string())),
+                               Capture::StdoutAndStderr, "SIGNSTIM_JSPSYCH=" + shellQuote((dir / "nowhere").string()));
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find("scripts/setup.sh"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "clips")) << "rendered before finding out";
+    // A command-line mistake is exit 1.
+    EXPECT_EQ(runSignstim(study(shellQuote(kSmall) + " --experiment psychopy --out " + shellQuote(dir.string()))).status, 1);
+}
+
+TEST(StudyCli, ExperimentIsWrittenWithTheStudyIntoTheManifestAndKeptByLaterRuns) {
+    const fs::path jspsych = fakeJspsych();
+    const std::string environment = "SIGNSTIM_JSPSYCH=" + shellQuote(jspsych.string());
+    const fs::path dir = freshDir("experiment");
+    fs::copy(referenceRun(), dir, fs::copy_options::recursive);
+    const std::string base = study(shellQuote(kSmall) + " --quiet --out " + shellQuote(dir.string()));
+    // On a complete study nothing is rendered: the documents are written again, with the experiment.
+    const auto r = runSignstim(base + " --experiment jspsych", Capture::StdoutAndStderr, environment);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("0 of 8 units rendered"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("experiment/index.html?participant=P01"), std::string::npos) << r.output;
+
+    for (const signstim::stimuli::ExperimentLibraryFile& file : signstim::stimuli::jspsychLibraryFiles())
+        EXPECT_EQ(readFile(dir / file.path), readFile(jspsych / file.source)) << file.path;  // copied byte for byte
+    const std::string timeline = readFile(dir / "participants/P03/P03_timeline_variables.json");
+    EXPECT_NE(readFile(dir / "experiment/participants/P03.js")
+                  .find("window.signstimTimeline = " + timeline.substr(0, timeline.size() - 1) + ";\n"),
+              std::string::npos);
+
+    const nlohmann::json manifest = nlohmann::json::parse(readFile(dir / "manifest.json"));
+    std::map<std::string, nlohmann::json> listed;
+    for (const auto& f : manifest["files"]) listed[f["path"].get<std::string>()] = f;
+    std::size_t onDisk = 0;
+    for (const auto& e : fs::recursive_directory_iterator(dir / "experiment")) {
+        if (!e.is_regular_file()) continue;
+        ++onDisk;
+        const std::string relative = e.path().lexically_relative(dir).generic_string();
+        ASSERT_TRUE(listed.count(relative)) << relative << " is not in the manifest";
+        const std::string kind = listed[relative]["kind"];
+        EXPECT_EQ(kind, relative.rfind("experiment/jspsych/", 0) == 0 ? "experiment-library" : "experiment") << relative;
+    }
+    EXPECT_EQ(onDisk, 4 + 4 + signstim::stimuli::jspsychLibraryFiles().size());  // page, script, style, list; 4 participants
+    EXPECT_EQ(listed["experiment/participants/P02.js"]["participant"], "P02");
+    EXPECT_EQ(runSignstim("study verify " + shellQuote(dir.string())).status, 0);
+
+    // A later run without the flag keeps the experiment (a resumed run need not repeat it) ...
+    const std::string withExperiment = readFile(dir / "manifest.json");
+    const auto again = runSignstim(base, Capture::StdoutAndStderr, environment);
+    ASSERT_EQ(again.status, 0) << again.output;
+    EXPECT_EQ(readFile(dir / "manifest.json"), withExperiment);
+    // ... and --experiment none leaves it out of the manifest.
+    const auto none = runSignstim(base + " --experiment none");
+    ASSERT_EQ(none.status, 0) << none.output;
+    EXPECT_EQ(readFile(dir / "manifest.json"), readFile(referenceRun() / "manifest.json"));
 }
 
 }  // namespace

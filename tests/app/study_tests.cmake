@@ -2,11 +2,12 @@
 # shards and merge, interruption.
 signstim_add_test(signstim_app_study_tests
   SOURCES study_cli_test.cpp
-  LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
+  LIBS nlohmann_json::nlohmann_json signstim_test_run_command signstim_stimuli)
 add_dependencies(signstim_app_study_tests signstim)
 
-# The review page of a rendered study in headless Chromium (label browser; one browser at a
-# time; a missing browser is a skip, shown as such by CTest).
+# The review page and the jsPsych experiment of a rendered study in headless Chromium (label
+# browser; one browser at a time; a missing browser, or jsPsych not fetched, is a skip, shown as
+# such by CTest).
 add_executable(signstim_app_study_browser_tests study_browser_test.cpp)
 target_link_libraries(signstim_app_study_browser_tests PRIVATE signstim_test_run_command GTest::gtest_main)
 target_include_directories(signstim_app_study_browser_tests PRIVATE ${PROJECT_SOURCE_DIR})

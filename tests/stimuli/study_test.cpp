@@ -63,6 +63,27 @@ TEST(StudyFile, ReadsEveryFieldWithItsDefaults) {
     EXPECT_EQ(study.quick.msaa, 1u);
     EXPECT_EQ(study.likertMinimum, 1);
     EXPECT_EQ(study.likertMaximum, 10);
+    EXPECT_EQ(study.experiment, "");  // not said: the command line (or an earlier run) decides
+}
+
+TEST(StudyFile, OutputsNameTheJsPsychExperimentOrNone) {
+    const auto withOutputs = [](const std::string& outputs) {
+        std::string text = kStudy;
+        text.replace(text.rfind('}'), 1, ", \"outputs\": " + outputs + "}");
+        return parse(text);
+    };
+    EXPECT_EQ(withOutputs(R"({"experiment": "jspsych"})").experiment, "jspsych");
+    EXPECT_EQ(withOutputs(R"({"experiment": "none", "pngFrames": true})").experiment, "none");
+    EXPECT_TRUE(withOutputs(R"({"experiment": "none", "pngFrames": true})").pngFrames);
+    for (const std::string bad : {R"({"experiment": "psychopy"})", R"({"experiment": true})", R"({"experiment": ""})"}) {
+        try {
+            withOutputs(bad);
+            ADD_FAILURE() << "accepted: " << bad;
+        } catch (const signstim::InputError& e) {
+            EXPECT_EQ(e.field(), "/outputs/experiment") << e.what();
+            EXPECT_NE(std::string(e.what()).find("jspsych"), std::string::npos) << e.what();
+        }
+    }
 }
 
 TEST(StudyFile, MistakesNameTheLineAndTheField) {

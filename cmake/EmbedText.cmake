@@ -1,0 +1,30 @@
+# cmake -DOUTPUT=file.cpp -DNAMESPACE=ns -DINPUTS="name1=path1|name2=path2" -P EmbedText.cmake
+# Writes a C++ source defining `extern const std::string_view name` in namespace `ns` for each
+# input, holding the file's bytes (a raw string literal), so the binary never reads these
+# files at run time. Called at build time by signstim_embed_text (cmake/Embed.cmake).
+set(delimiter "signstim_embed")
+string(REPLACE "|" ";" INPUTS "${INPUTS}")
+set(text "// Generated from the files below by cmake/EmbedText.cmake at build time: do not edit.\n")
+string(APPEND text "#include <string_view>\n\nnamespace ${NAMESPACE} {\n")
+foreach(entry IN LISTS INPUTS)
+  string(FIND "${entry}" "=" equals)
+  string(SUBSTRING "${entry}" 0 ${equals} name)
+  math(EXPR start "${equals} + 1")
+  string(SUBSTRING "${entry}" ${start} -1 path)
+  file(READ "${path}" contents)
+  string(FIND "${contents}" ")${delimiter}\"" clash)
+  if(NOT clash EQUAL -1)
+    message(FATAL_ERROR "${path} contains )${delimiter}\" and cannot be embedded as a raw string")
+  endif()
+  string(APPEND text "\n// ${path}\nextern const std::string_view ${name};\n")
+  string(APPEND text "const std::string_view ${name} = R\"${delimiter}(${contents})${delimiter}\";\n")
+endforeach()
+string(APPEND text "\n}  // namespace ${NAMESPACE}\n")
+# Only a changed file is rewritten, so an unchanged embed does not recompile.
+if(EXISTS "${OUTPUT}")
+  file(READ "${OUTPUT}" old)
+  if(old STREQUAL text)
+    return()
+  endif()
+endif()
+file(WRITE "${OUTPUT}" "${text}")

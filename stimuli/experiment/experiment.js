@@ -1,0 +1,408 @@
+// signstim: a study's jsPsych 8 experiment (docs/experiment.md). `signstim study
+// --experiment jspsych` writes this file unchanged into every study's experiment/ folder; what
+// differs between studies and participants is in participants/*.js.
+//
+// index.html?participant=P07 runs P07's session, in the order of their schedule:
+//   phase 1: each story's video plays once (no controls, no pause, no replay), then its
+//            multiple-choice questions;
+//   phase 2: each side-by-side video (controls: replay allowed) with a rating of every panel.
+// At the end the answers are saved as signstim-results_P07.csv (one row per trial) on the
+// participant's machine, and handed to window.signstimHooks.onFinish when a page defines it
+// (a server: JATOS, Pavlovia, your own; docs/experiment.md). Without ?participant= the page
+// lists the study's participants.
+//
+// A classic script, no modules and no fetch(): browsers refuse both from file://, and the
+// folder must run from disk as well as from any static web server. The participant's timeline
+// arrives as participants/P07.js (a <script> setting window.signstimTimeline).
+(function () {
+  "use strict";
+
+  // The saved data's columns, in this order (docs/experiment.md). The analysis reads them by name.
+  const RESULT_COLUMNS = [
+    "participant", "phase", "trial", "story_id", "sentence_id", "version", "panel_code",
+    "q1_response", "q1_correct", "q2_response", "q2_correct", "q3_response", "q3_correct",
+    "q4_response", "q4_correct", "n_correct",
+    "rating_a", "rating_b", "rating_c", "rating_d",
+    "rating_point", "rating_vector", "rating_animator", "rating_uninflected",
+    "rt_ms",
+  ];
+  const LETTERS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ";
+  // The timeline files name clips relative to the study folder; this page is one level down.
+  const STUDY_FOLDER = "../";
+
+  function escapeHtml(text) {
+    return String(text).replace(/[&<>"']/g, (c) =>
+      ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" })[c]);
+  }
+
+  function clipUrl(path) {
+    return STUDY_FOLDER + path.split("/").map(encodeURIComponent).join("/");
+  }
+
+  function plural(count, one, many) {
+    return count + " " + (count === 1 ? one : many);
+  }
+
+  // ---- what the participant reads --------------------------------------------------------------
+
+  function welcomeHtml(vars) {
+    const stories = vars.phase1.length;
+    const videos = vars.phase2.length;
+    const panels = videos > 0 ? Object.keys(vars.phase2[0].panels).length : 0;
+    let html =
+      "<h1>Welcome</h1>" +
+      "<p>In this study you watch short videos of an animated signer using American Sign Language (ASL).</p>";
+    html +=
+      "<h2>Part 1 · " + plural(stories, "story", "stories") + "</h2>" +
+      "<p>Each story plays <strong>once</strong>: it cannot be paused or replayed, so please watch it closely. " +
+      "After each story you answer a few questions about it.</p>";
+    if (videos > 0) {
+      html +=
+        "<h2>Part 2 · " + plural(videos, "video", "videos") + "</h2>" +
+        "<p>Each video shows one sentence signed " + panels + " times side by side, in panels " +
+        panelList(panels) + ". You may replay it as often as you like, and you rate how well each panel " +
+        "signs the sentence, from " + vars.likert.minimum + " to " + vars.likert.maximum + ".</p>";
+    }
+    html += "<p class=\"signstim-note\">At the end your answers are saved as a file on this computer.</p>";
+    return html;
+  }
+
+  function panelList(count) {
+    const letters = LETTERS.slice(0, count).split("");
+    return letters.length < 2 ? letters.join("") : letters.slice(0, -1).join(", ") + " and " + letters[letters.length - 1];
+  }
+
+  function stepHtml(part, index, count, noun) {
+    return "<p class=\"signstim-step\">Part " + part + " · " + noun + " " + (index + 1) + " of " + count + "</p>";
+  }
+
+  function storyReadyHtml(index, count) {
+    return stepHtml(1, index, count, "Story") +
+      "<h1>Ready for the next story?</h1>" +
+      "<p>The story plays once, without pause or replay. Questions about it follow.</p>";
+  }
+
+  function phase2IntroHtml(vars) {
+    const panels = Object.keys(vars.phase2[0].panels).length;
+    return "<h1>Part 2</h1>" +
+      "<p>Each video now shows the same sentence signed " + panels + " times, side by side, in panels " +
+      panelList(panels) + ". The panels play together.</p>" +
+      "<p>Watch the video to the end; replay it as often as you like. Then rate how well the sentence is " +
+      "signed in each panel, from " + vars.likert.minimum + " (very poorly) to " + vars.likert.maximum +
+      " (very well).</p>";
+  }
+
+  function ratingPreambleHtml(url, index, count) {
+    return stepHtml(2, index, count, "Video") +
+      "<video id=\"signstim-rating-video\" class=\"signstim-video\" src=\"" + escapeHtml(url) + "\" " +
+      "controls autoplay playsinline preload=\"auto\" disablepictureinpicture " +
+      "controlslist=\"nodownload noremoteplayback\"></video>";
+  }
+
+  function ratingFormHtml(panels, likert) {
+    const values = [];
+    for (let v = likert.minimum; v <= likert.maximum; ++v) values.push(v);
+    let html =
+      "<p class=\"signstim-rating-question\">How well is the sentence signed in each panel?</p>" +
+      "<table class=\"signstim-ratings\"><thead><tr><th scope=\"col\"><span class=\"signstim-hidden\">Panel</span></th>";
+    values.forEach((v, i) => {
+      const anchor = i === 0 ? "very poorly" : i === values.length - 1 ? "very well" : "";
+      html += "<th scope=\"col\">" + v + (anchor ? "<span class=\"signstim-anchor\">" + anchor + "</span>" : "") + "</th>";
+    });
+    html += "</tr></thead><tbody>";
+    for (const panel of panels) {
+      html += "<tr><th scope=\"row\">Panel " + panel + "</th>";
+      for (const v of values) {
+        const id = "signstim-rate-" + panel + "-" + v;
+        html += "<td><label for=\"" + id + "\"><input type=\"radio\" id=\"" + id + "\" name=\"" + panel +
+          "\" value=\"" + v + "\" required aria-label=\"Panel " + panel + ": " + v + "\"></label></td>";
+      }
+      html += "</tr>";
+    }
+    html += "</tbody></table>" +
+      "<p class=\"signstim-note\" id=\"signstim-rating-wait\">You can continue once the video has played to the end.</p>";
+    return html;
+  }
+
+  function videoProblemHtml(url) {
+    return "<h1>This video cannot be played</h1>" +
+      "<p>Please tell the experimenter. (The browser could not play <code>" + escapeHtml(url) + "</code>.)</p>";
+  }
+
+  // ---- the session ----------------------------------------------------------------------------
+
+  // Keeps a phase-1 story to one uninterrupted viewing: no context menu (which offers controls and
+  // loop), no picture-in-picture; a clip that fails to load says so instead of waiting forever.
+  function guardStoryVideo(jsPsych, url) {
+    const video = document.getElementById("jspsych-video-keyboard-response-stimulus");
+    if (!video) return;
+    video.classList.add("signstim-video");
+    video.disablePictureInPicture = true;
+    video.setAttribute("playsinline", "");
+    video.addEventListener("contextmenu", (event) => event.preventDefault());
+    watchForVideoError(jsPsych, video, url);
+  }
+
+  function watchForVideoError(jsPsych, video, url) {
+    const fail = () => {
+      console.error("signstim: cannot play " + url);
+      jsPsych.getDisplayElement().innerHTML = videoProblemHtml(url);
+    };
+    video.addEventListener("error", fail);
+    video.querySelectorAll("source").forEach((source) => source.addEventListener("error", fail));
+  }
+
+  function emptyRow(vars, phase, trial) {
+    const row = {};
+    for (const column of RESULT_COLUMNS) row[column] = "";
+    row.participant = vars.participant;
+    row.phase = phase;
+    row.trial = trial;
+    return row;
+  }
+
+  function phase1Row(vars, trial, data) {
+    const row = emptyRow(vars, 1, trial.trial);
+    row.story_id = trial.story;
+    row.version = trial.version;
+    let correct = 0;
+    trial.questions.forEach((question, q) => {
+      const chosen = data.response_index[q];  // the plugin records each answer's 0-based option index
+      const letter = chosen >= 0 ? LETTERS[chosen] : "";
+      const right = chosen === question.correct ? 1 : 0;
+      row["q" + (q + 1) + "_response"] = letter;
+      row["q" + (q + 1) + "_correct"] = right;
+      correct += right;
+    });
+    row.n_correct = correct;
+    row.rt_ms = Math.round(data.rt);
+    return row;
+  }
+
+  function phase2Row(vars, trial, panels, data) {
+    const row = emptyRow(vars, 2, trial.trial);
+    row.sentence_id = trial.sentence;
+    row.panel_code = trial.panel_code;
+    for (const panel of panels) {
+      const rating = data.response[panel];
+      row["rating_" + panel.toLowerCase()] = rating;
+      row["rating_" + trial.panels[panel]] = rating;  // the panel's version: the ratings unmapped
+    }
+    row.rt_ms = Math.round(data.rt);
+    return row;
+  }
+
+  function textPage(html, button) {
+    return {
+      type: jsPsychHtmlButtonResponse,
+      stimulus: "<div class=\"signstim-text\">" + html + "</div>",
+      choices: [button],
+      data: { signstim_page: "text" },
+    };
+  }
+
+  function buildTimeline(jsPsych, vars, rows) {
+    const timeline = [];
+    const stories = vars.phase1.length;
+    const videos = vars.phase2.length;
+
+    // Over HTTP the clips are fetched before the session starts, so none stalls mid-story.
+    // From disk they are local files already, and browsers refuse the preload's requests there.
+    if (location.protocol !== "file:") {
+      timeline.push({
+        type: jsPsychPreload,
+        video: vars.phase1.concat(vars.phase2).map((trial) => clipUrl(trial.video[0])),
+        message: "<p>Loading the videos…</p>",
+        error_message: "<p>The videos could not be loaded. Please tell the experimenter.</p>",
+        show_detailed_errors: true,
+        continue_after_error: false,
+      });
+    }
+
+    timeline.push(textPage(welcomeHtml(vars), "Begin"));
+
+    vars.phase1.forEach((trial, index) => {
+      const url = clipUrl(trial.video[0]);
+      timeline.push(textPage(storyReadyHtml(index, stories), "Play the story"));
+      timeline.push({
+        type: jsPsychVideoKeyboardResponse,
+        stimulus: [url],
+        controls: false,
+        autoplay: true,
+        choices: "NO_KEYS",
+        response_allowed_while_playing: false,
+        trial_ends_after_video: true,
+        on_load: () => guardStoryVideo(jsPsych, url),
+        data: { signstim_page: "story", story: trial.story, version: trial.version, trial: trial.trial },
+      });
+      timeline.push({
+        type: jsPsychSurveyMultiChoice,
+        preamble: stepHtml(1, index, stories, "Story") + "<h1>Questions about the story</h1>",
+        questions: trial.questions.map((question) => ({
+          prompt: question.prompt,
+          options: question.options,
+          required: true,
+          name: question.name,
+        })),
+        button_label: "Continue",
+        data: { signstim_page: "questions", story: trial.story, version: trial.version, trial: trial.trial },
+        on_finish: (data) => rows.push(phase1Row(vars, trial, data)),
+      });
+    });
+
+    if (videos > 0) {
+      timeline.push(textPage(phase2IntroHtml(vars), "Start part 2"));
+      vars.phase2.forEach((trial, index) => {
+        const url = clipUrl(trial.video[0]);
+        const panels = Object.keys(trial.panels).sort();
+        timeline.push({
+          type: jsPsychSurveyHtmlForm,
+          // A function: evaluated when the trial starts, after the preload has made its copy.
+          preamble: () => ratingPreambleHtml(jsPsych.pluginAPI.getVideoBuffer(url) || url, index, videos),
+          html: ratingFormHtml(panels, vars.likert),
+          button_label: "Continue",
+          on_load: () => {
+            const video = document.getElementById("signstim-rating-video");
+            const next = document.getElementById("jspsych-survey-html-form-next");
+            next.disabled = true;
+            video.addEventListener("contextmenu", (event) => event.preventDefault());
+            video.addEventListener("ended", () => {
+              next.disabled = false;
+              document.getElementById("signstim-rating-wait").hidden = true;
+            }, { once: true });
+            watchForVideoError(jsPsych, video, url);
+          },
+          data: { signstim_page: "ratings", sentence: trial.sentence, panel_code: trial.panel_code, trial: trial.trial },
+          on_finish: (data) => rows.push(phase2Row(vars, trial, panels, data)),
+        });
+      });
+    }
+    return timeline;
+  }
+
+  // ---- saving ---------------------------------------------------------------------------------
+
+  function csvField(value) {
+    const text = value === null || value === undefined ? "" : String(value);
+    return /[",\r\n]/.test(text) ? "\"" + text.replace(/"/g, "\"\"") + "\"" : text;
+  }
+
+  // RFC 4180, CRLF line ends, like the study's other CSV files.
+  function resultsCsv(rows) {
+    const lines = [RESULT_COLUMNS.join(",")];
+    for (const row of rows) lines.push(RESULT_COLUMNS.map((column) => csvField(row[column])).join(","));
+    return lines.join("\r\n") + "\r\n";
+  }
+
+  function saveFile(text, fileName) {
+    const url = URL.createObjectURL(new Blob([text], { type: "text/csv;charset=utf-8" }));
+    const link = document.createElement("a");
+    link.href = url;
+    link.download = fileName;
+    link.hidden = true;
+    document.body.appendChild(link);
+    link.click();
+    link.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 60000);
+  }
+
+  async function finishSession(jsPsych, vars, rows, state) {
+    const fileName = "signstim-results_" + vars.participant + ".csv";
+    const csv = resultsCsv(rows);
+    const hooks = window.signstimHooks || {};
+    const display = jsPsych.getDisplayElement();
+    if (hooks.saveLocally !== false) saveFile(csv, fileName);
+    let serverProblem = null;
+    if (typeof hooks.onFinish === "function") {
+      display.innerHTML = "<div class=\"signstim-text\"><p>Saving your answers…</p></div>";
+      try {
+        await hooks.onFinish({ participant: vars.participant, fileName: fileName, csv: csv, rows: rows,
+                               data: jsPsych.data.get() });
+      } catch (error) {
+        serverProblem = error;
+        console.error("signstim: signstimHooks.onFinish failed:", error);
+        if (hooks.saveLocally === false) saveFile(csv, fileName);
+      }
+    }
+    state.finished = true;
+    let html = "<h1>Thank you!</h1><p>You have finished. Please tell the experimenter.</p>";
+    if (serverProblem) html += "<p class=\"signstim-problem\">Your answers could not be sent to the server.</p>";
+    if (hooks.saveLocally !== false || serverProblem) {
+      html += "<p class=\"signstim-note\">Your answers were saved on this computer as <code>" + escapeHtml(fileName) +
+        "</code> (usually in the Downloads folder). If no file appeared, save it again:</p>" +
+        "<p><button type=\"button\" class=\"jspsych-btn\" id=\"signstim-save-again\">Save the answers again</button></p>";
+    }
+    display.innerHTML = "<div class=\"signstim-text\">" + html + "</div>";
+    const again = document.getElementById("signstim-save-again");
+    if (again) again.addEventListener("click", () => saveFile(csv, fileName));
+  }
+
+  // ---- start ------------------------------------------------------------------------------------
+
+  function showChooser(study, problem) {
+    const start = document.getElementById("signstim-start");
+    let html = "<h1>" + escapeHtml(study.title) + "</h1>";
+    if (problem) html += "<p class=\"signstim-problem\">" + escapeHtml(problem) + "</p>";
+    html +=
+      "<p>Each participant runs their own session, in the order of their schedule. Give each participant " +
+      "this page's address followed by <code>?participant=</code> and their id, or choose one here:</p>" +
+      "<ul class=\"signstim-participants\">";
+    for (const id of study.participants)
+      html += "<li><a href=\"?participant=" + encodeURIComponent(id) + "\">" + escapeHtml(id) + "</a></li>";
+    html += "</ul>";
+    start.innerHTML = html;
+  }
+
+  function loadParticipant(id) {
+    return new Promise((resolve, reject) => {
+      const script = document.createElement("script");
+      script.src = "participants/" + encodeURIComponent(id) + ".js";
+      script.onload = () => resolve(window.signstimTimeline);
+      script.onerror = () => reject(new Error("participants/" + id + ".js could not be loaded"));
+      document.head.appendChild(script);
+    });
+  }
+
+  function runSession(vars) {
+    document.getElementById("signstim-start").remove();
+    document.title = vars.study.title;
+    const rows = [];
+    const state = { finished: false };
+    // Leaving mid-session loses the answers so far: the browser asks first.
+    window.addEventListener("beforeunload", (event) => {
+      if (state.finished) return;
+      event.preventDefault();
+      event.returnValue = "";
+    });
+    const jsPsych = initJsPsych({
+      show_progress_bar: true,
+      message_progress_bar: "Progress",
+      on_finish: () => finishSession(jsPsych, vars, rows, state),
+    });
+    jsPsych.data.addProperties({ participant: vars.participant, group: vars.group,
+                                 design_hash: vars.study.design_hash });
+    jsPsych.run(buildTimeline(jsPsych, vars, rows));
+  }
+
+  function main() {
+    const study = window.signstimStudy;
+    const id = new URLSearchParams(location.search).get("participant");
+    if (id === null || id === "") {
+      showChooser(study, "");
+      return;
+    }
+    if (study.participants.indexOf(id) < 0) {
+      showChooser(study, "This study has no participant \u201c" + id + "\u201d.");
+      return;
+    }
+    loadParticipant(id).then((vars) => {
+      if (!vars || vars.participant !== id) throw new Error("participants/" + id + ".js holds another participant");
+      runSession(vars);
+    }).catch((error) => {
+      console.error("signstim: " + error.message);
+      showChooser(study, "The session of " + id + " could not be started: " + error.message + ".");
+    });
+  }
+
+  main();
+})();

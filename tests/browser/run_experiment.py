@@ -1,0 +1,628 @@
+#!/usr/bin/python3
+"""Runs a study's jsPsych experiment (DIR/experiment/) in headless Chromium for two participants
+with a scripted responder, and checks the CSV each session saves.
+
+  /usr/bin/python3 tests/browser/run_experiment.py DIR [--participants P01 P02] [--screenshots OUT]
+
+Run it with Debian's python3 (/usr/bin/python3), which sees Debian's python3-selenium; it needs
+the packages chromium, chromium-driver and python3-selenium. Standard library + selenium only.
+
+The first participant's session runs from disk (file://), the second's from a static web
+server on 127.0.0.1 (the study folder served by Python's http.server), so both ways the
+experiment is meant to run are exercised, the preload of the videos included.
+
+The responder, deterministic: on each text page it presses the button; on a story's video it
+checks there are no controls and nothing to respond with, then seeks to the end; on the
+questions it answers some right and some wrong (a rule of participant, trial and question);
+on a rating page it checks the video has controls and that Continue waits for the video's end,
+seeks to the end, and gives each panel a different rating. The saved file
+(signstim-results_PNN.csv, captured through Chromium's download folder) must then have:
+  - exactly the documented header and CRLF line ends, one row per trial, phase 1 then phase 2;
+  - the stories, versions, sentences and panel codes of the participant's schedule, in order,
+    as both participants/PNN/PNN_conditions.csv and PNN_timeline_variables.json give them;
+  - each answer's letter and correct flag (against the answer key of the timeline file) and
+    n_correct; each panel's rating, and the ratings unmapped to versions through the panel
+    code's letters (P V A U = point vector animator uninflected), computed here independently;
+  - empty cells where a column does not apply, and a whole-number rt_ms;
+and the browser log no SEVERE entry (console errors, failed loads). Finally the checker is
+shown to fail: copies of the first saved CSV with a swapped rating, a flipped correct flag,
+two trials swapped, a row missing and a renamed column must each be rejected.
+
+Exit status: 0 pass; 1 a check failed (each failure listed); 77 Chromium, its driver or
+selenium is missing or the browser cannot start (a skip for CTest, never a pass); 2 bad usage.
+The whole run is bounded by --timeout (default 300 s).
+"""
+
+import argparse
+import csv
+import functools
+import html
+import http.server
+import io
+import json
+import os
+import pathlib
+import sys
+import tempfile
+import threading
+import time
+
+sys.dont_write_bytecode = True  # importing the review-page checker leaves no __pycache__ in the source tree
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from check_review_page import INSTALL_HINT, SKIP, find_program, kill_tree  # noqa: E402
+
+RESULT_COLUMNS = (
+    "participant,phase,trial,story_id,sentence_id,version,panel_code,"
+    "q1_response,q1_correct,q2_response,q2_correct,q3_response,q3_correct,q4_response,q4_correct,n_correct,"
+    "rating_a,rating_b,rating_c,rating_d,rating_point,rating_vector,rating_animator,rating_uninflected,rt_ms"
+).split(",")
+VERSION_OF_LETTER = {"P": "point", "V": "vector", "A": "animator", "U": "uninflected"}
+LETTERS = "ABCDEFGHIJ"
+
+# What is on screen now, as plain JSON. The responder marks the element it acted on
+# (data-responder), so a page is handled once even while jsPsych has not replaced it yet.
+STATE_JS = r"""
+const q = (s) => document.querySelector(s);
+const mark = (e) => e ? e.dataset.responder === 'done' : false;
+const saveAgain = q('#signstim-save-again');
+if (saveAgain) return {page: 'end'};
+const story = q('#jspsych-video-keyboard-response-stimulus');
+if (story) return {page: 'story', seen: mark(story), controls: story.controls,
+  controlsAttribute: story.hasAttribute('controls'), loop: story.loop, paused: story.paused,
+  readyState: story.readyState, duration: story.duration, src: story.currentSrc,
+  inputs: document.querySelectorAll('#jspsych-content button, #jspsych-content input').length};
+const questions = q('#jspsych-survey-multi-choice_form');
+if (questions) return {page: 'questions', seen: mark(questions),
+  prompts: Array.from(document.querySelectorAll('.jspsych-survey-multi-choice-question'), (e) => ({
+    name: e.dataset.name, prompt: e.querySelector('p.jspsych-survey-multi-choice-text').innerText.trim(),
+    options: Array.from(e.querySelectorAll('input[type=radio]'), (i) => i.value)}))};
+const ratings = q('#jspsych-survey-html-form');
+if (ratings) { const v = q('#signstim-rating-video'); const next = q('#jspsych-survey-html-form-next');
+  return {page: 'ratings', seen: mark(ratings), controls: v ? v.controls : null, readyState: v ? v.readyState : 0,
+    duration: v ? v.duration : 0, src: v ? v.currentSrc : '', ended: v ? v.ended : false,
+    nextDisabled: next ? next.disabled : null,
+    panels: Array.from(document.querySelectorAll('table.signstim-ratings tbody th'), (e) => e.innerText.trim()),
+    values: Array.from(document.querySelectorAll('table.signstim-ratings thead th'), (e) => e.innerText.trim())}; }
+const buttons = q('#jspsych-html-button-response-btngroup');
+if (buttons) return {page: 'text', seen: mark(buttons), text: q('#jspsych-html-button-response-stimulus').innerText};
+if (q('#jspsych-loading-progress-bar-container')) return {page: 'loading'};
+const start = q('#signstim-start');
+if (start) return {page: 'start', text: start.innerText};
+return {page: 'other', text: document.body ? document.body.innerText.slice(0, 300) : ''};
+"""
+
+MARK_JS = "arguments[0].dataset.responder = 'done';"
+SEEK_END_JS = r"""
+const v = arguments[0];
+v.playbackRate = 16;
+v.currentTime = Math.max(0, v.duration - 0.05);
+"""
+
+
+class Failure(Exception):
+    pass
+
+
+def loud(lines):
+    bar = "=" * 78
+    print(bar, file=sys.stderr)
+    for line in lines:
+        print("run_experiment: " + line, file=sys.stderr)
+    print(bar, file=sys.stderr)
+
+
+def unescape(text):
+    return html.unescape(text)
+
+
+def read_conditions(path):
+    with open(path, newline="", encoding="utf-8") as handle:
+        return list(csv.DictReader(handle))
+
+
+class Expected:
+    """What one participant's session answered, as the responder chose it."""
+
+    def __init__(self, participant, timeline, conditions):
+        self.participant = participant
+        self.timeline = timeline
+        self.conditions = conditions
+        self.answers = []   # per phase-1 trial: list of chosen 0-based option indices
+        self.ratings = []   # per phase-2 trial: list of ratings, panel A first
+
+
+def answer_plan(person, trial, question, correct, options):
+    """Right unless (person + trial + question) % 3 == 0: then a wrong option, deterministically."""
+    if (person + trial + question) % 3 != 0:
+        return correct
+    return (correct + 1 + trial % (options - 1)) % options
+
+
+def rating_plan(person, trial, panels, minimum, maximum):
+    span = maximum - minimum + 1
+    step = 3 if span >= 10 else 1  # 0, 3, 6, 9: distinct on a 10-point scale
+    base = person * 5 + trial * 3
+    return [minimum + (base + k * step) % span for k in range(panels)]
+
+
+class Session:
+    def __init__(self, driver, args, screenshots):
+        self.driver = driver
+        self.args = args
+        self.screenshots = screenshots
+        self.shots = set()  # the pages already pictured: each kind once
+
+    def state(self):
+        return self.driver.execute_script(STATE_JS)
+
+    def element(self, selector):
+        from selenium.webdriver.common.by import By
+        return self.driver.find_element(By.CSS_SELECTOR, selector)
+
+    def screenshot(self, name):
+        if not self.screenshots or name in self.shots:
+            return
+        self.shots.add(name)
+        path = pathlib.Path(self.screenshots) / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        metrics = self.driver.execute_cdp_cmd("Page.getLayoutMetrics", {})
+        size = metrics.get("cssContentSize") or metrics["contentSize"]
+        import base64
+        shot = self.driver.execute_cdp_cmd("Page.captureScreenshot", {
+            "format": "png", "captureBeyondViewport": True,
+            "clip": {"x": 0, "y": 0, "width": int(size["width"]), "height": min(int(size["height"]), 4000), "scale": 1}})
+        path.write_bytes(base64.b64decode(shot["data"]))
+
+    def run(self, url, person, expected, downloads, over_http):
+        vars_ = expected.timeline
+        phase1, phase2 = vars_["phase1"], vars_["phase2"]
+        story_index = 0
+        rating_index = 0
+        texts = 0
+        deadline = time.monotonic() + self.args.session_timeout
+        self.driver.get(url)
+        while True:
+            if time.monotonic() > deadline:
+                raise Failure(f"{expected.participant}: the session did not end within {self.args.session_timeout:g} s "
+                              f"(last page: {self.state()})")
+            state = self.state()
+            page = state["page"]
+            if page == "end":
+                break
+            if page in ("loading", "other") or state.get("seen"):
+                time.sleep(0.05)
+                continue
+            if page == "start":
+                raise Failure(f"{expected.participant}: the page shows the participant list instead of a session: "
+                              f"{state['text'][:200]!r}")
+            if page == "text":
+                self.screenshot(["welcome.png", "phase1-ready.png"][texts] if texts < 2 else
+                                "phase2-intro.png" if story_index == len(phase1) else "phase1-ready.png")
+                self.driver.execute_script(MARK_JS, self.element("#jspsych-html-button-response-btngroup"))
+                self.element("#jspsych-html-button-response-btngroup button").click()
+                texts += 1
+            elif page == "story":
+                self.story(state, phase1, story_index, expected, over_http)
+            elif page == "questions":
+                self.questions(state, phase1, story_index, person, expected)
+                story_index += 1
+            elif page == "ratings":
+                self.ratings(state, phase2, rating_index, person, expected, over_http)
+                rating_index += 1
+        self.screenshot("end.png")
+        if story_index != len(phase1) or rating_index != len(phase2):
+            raise Failure(f"{expected.participant}: the session showed {story_index} stories and {rating_index} rating "
+                          f"pages; the schedule has {len(phase1)} and {len(phase2)}")
+        expected_texts = 1 + len(phase1) + (1 if phase2 else 0)
+        if texts != expected_texts:
+            raise Failure(f"{expected.participant}: {texts} text pages, expected {expected_texts} "
+                          "(welcome, one before each story, one before part 2)")
+        return self.wait_for_download(downloads, f"signstim-results_{expected.participant}.csv")
+
+    def story(self, state, phase1, index, expected, over_http):
+        who = f"{expected.participant} story {index + 1}"
+        if index >= len(phase1):
+            raise Failure(f"{who}: more stories than the schedule's {len(phase1)}")
+        if state["controls"] or state["controlsAttribute"] or state["loop"]:
+            raise Failure(f"{who}: the story video has controls or loops: it must play once, without replay")
+        if state["inputs"]:
+            raise Failure(f"{who}: {state['inputs']} button(s)/input(s) while the story plays: no response before its end")
+        # Autoplay, then to the end at once (the test has no time to watch).
+        video = self.element("#jspsych-video-keyboard-response-stimulus")
+        end = time.monotonic() + 20
+        while True:
+            state = self.state()
+            if state["page"] != "story":
+                raise Failure(f"{who}: the video trial ended before the video was played to its end")
+            if state["readyState"] >= 1 and not state["paused"]:
+                break  # the source is chosen (currentSrc is set asynchronously) and it plays
+            if time.monotonic() > end:
+                raise Failure(f"{who}: the video did not start playing by itself within 20 s "
+                              f"(readyState {state['readyState']}, paused {state['paused']})")
+            time.sleep(0.05)
+        self.check_source(who, state["src"], phase1[index]["video"][0], over_http)
+        self.screenshot("phase1-story.png")
+        self.driver.execute_script(MARK_JS, video)
+        self.driver.execute_script(SEEK_END_JS, video)
+
+    def check_source(self, who, src, clip, over_http):
+        if over_http:
+            if not src.startswith("blob:"):
+                raise Failure(f"{who}: over HTTP the video should play from the preloaded copy (blob:), not {src}")
+        elif not src.endswith("/" + clip):
+            raise Failure(f"{who}: plays {src}, the schedule says {clip}")
+
+    def questions(self, state, phase1, index, person, expected):
+        who = f"{expected.participant} story {index + 1} questions"
+        trial = phase1[index]
+        questions = trial["questions"]
+        shown = state["prompts"]
+        if len(shown) != len(questions):
+            raise Failure(f"{who}: {len(shown)} questions shown, the story has {len(questions)}")
+        chosen = []
+        for q, (question, page) in enumerate(zip(questions, shown)):
+            if page["prompt"] != unescape(question["prompt"]):
+                raise Failure(f"{who}: question {q + 1} reads {page['prompt']!r}, expected {unescape(question['prompt'])!r}")
+            if page["options"] != [unescape(o) for o in question["options"]]:
+                raise Failure(f"{who}: question {q + 1} offers {page['options']}, expected the story's choices in order")
+            pick = answer_plan(person, index, q, question["correct"], len(question["options"]))
+            self.element(f"#jspsych-survey-multi-choice-response-{q}-{pick}").click()
+            chosen.append(pick)
+        expected.answers.append(chosen)
+        self.screenshot("phase1-questions.png")
+        self.driver.execute_script(MARK_JS, self.element("#jspsych-survey-multi-choice_form"))
+        self.element("#jspsych-survey-multi-choice-next").click()
+
+    def ratings(self, state, phase2, index, person, expected, over_http):
+        who = f"{expected.participant} rating {index + 1}"
+        if index >= len(phase2):
+            raise Failure(f"{who}: more rating pages than the schedule's {len(phase2)}")
+        trial = phase2[index]
+        panels = sorted(trial["panels"])
+        likert = expected.timeline["likert"]
+        if state["controls"] is not True:
+            raise Failure(f"{who}: the side-by-side video must have controls (replay allowed)")
+        if state["panels"] != [f"Panel {p}" for p in panels]:
+            raise Failure(f"{who}: rows {state['panels']}, expected {['Panel ' + p for p in panels]}")
+        scale = [str(v) for v in range(likert["minimum"], likert["maximum"] + 1)]
+        if [v.split()[0] for v in state["values"][1:]] != scale:
+            raise Failure(f"{who}: scale {state['values'][1:]}, expected {scale}")
+        if state["nextDisabled"] is not True and not state["ended"]:
+            raise Failure(f"{who}: Continue is enabled before the video has played to its end")
+        given = rating_plan(person, index, len(panels), likert["minimum"], likert["maximum"])
+        for panel, value in zip(panels, given):
+            self.element(f"#signstim-rate-{panel}-{value}").click()
+        expected.ratings.append(given)
+        video = self.element("#signstim-rating-video")
+        end = time.monotonic() + 20
+        while (state := self.state()).get("readyState", 0) < 1:
+            if time.monotonic() > end:
+                raise Failure(f"{who}: the video's metadata did not load within 20 s")
+            time.sleep(0.05)
+        self.check_source(who, state["src"], trial["video"][0], over_http)
+        self.driver.execute_script(SEEK_END_JS, video)
+        end = time.monotonic() + 20
+        while self.state().get("nextDisabled"):
+            if time.monotonic() > end:
+                raise Failure(f"{who}: Continue stayed disabled 20 s after the video was sought to its end")
+            time.sleep(0.05)
+        self.screenshot("phase2-ratings.png")
+        self.driver.execute_script(MARK_JS, self.element("#jspsych-survey-html-form"))
+        self.element("#jspsych-survey-html-form-next").click()
+
+    def wait_for_download(self, downloads, name):
+        path = pathlib.Path(downloads) / name
+        end = time.monotonic() + 20
+        while not path.is_file() or any(pathlib.Path(downloads).glob("*.crdownload")):
+            if time.monotonic() > end:
+                present = sorted(p.name for p in pathlib.Path(downloads).iterdir())
+                raise Failure(f"the session ended but {name} was not saved within 20 s (downloads: {present})")
+            time.sleep(0.05)
+        return path.read_bytes()
+
+
+def check_results(data, expected):
+    """Failures of one saved CSV against what the responder did and the participant's schedule."""
+    failures = []
+    who = expected.participant
+    text = data.decode("utf-8") if isinstance(data, bytes) else data
+    lines = text.split("\r\n")
+    if lines[-1] != "" or any("\n" in line for line in lines):
+        failures.append(f"{who}: lines must end in CRLF, the last one too")
+    rows = list(csv.reader(io.StringIO(text, newline="")))
+    if not rows or rows[0] != RESULT_COLUMNS:
+        failures.append(f"{who}: header {','.join(rows[0]) if rows else '(none)'}; expected {','.join(RESULT_COLUMNS)}")
+        return failures
+    records = [dict(zip(RESULT_COLUMNS, row)) for row in rows[1:]]
+    for number, row in enumerate(rows[1:], start=2):
+        if len(row) != len(RESULT_COLUMNS):
+            failures.append(f"{who}: line {number} has {len(row)} fields, the header {len(RESULT_COLUMNS)}")
+    phase1 = expected.timeline["phase1"]
+    phase2 = expected.timeline["phase2"]
+    if len(records) != len(phase1) + len(phase2):
+        failures.append(f"{who}: {len(records)} rows; the schedule has {len(phase1)} + {len(phase2)} trials")
+    conditions1 = [c for c in expected.conditions if c["phase"] == "1"]
+    conditions2 = [c for c in expected.conditions if c["phase"] == "2"]
+
+    def empty(row, columns, where):
+        for column in columns:
+            if row.get(column, "") != "":
+                failures.append(f"{where}: {column} is {row[column]!r}, expected empty")
+
+    def whole_ms(row, where):
+        if not row.get("rt_ms", "").isdigit():
+            failures.append(f"{where}: rt_ms {row.get('rt_ms')!r} is not a whole number of milliseconds")
+
+    rating_columns = [c for c in RESULT_COLUMNS if c.startswith("rating_")]
+    question_columns = [c for c in RESULT_COLUMNS if c.startswith("q") or c == "n_correct"]
+    for i, trial in enumerate(phase1):
+        if i >= len(records):
+            break
+        row, where = records[i], f"{who} phase-1 row {i + 1}"
+        scheduled = conditions1[i] if i < len(conditions1) else {}
+        wanted = {"participant": who, "phase": "1", "trial": str(i + 1), "story_id": trial["story"],
+                  "version": trial["version"]}
+        for column, value in wanted.items():
+            if row[column] != value:
+                failures.append(f"{where}: {column} is {row[column]!r}, expected {value!r}")
+        if scheduled.get("story_id") != trial["story"] or scheduled.get("version") != trial["version"]:
+            failures.append(f"{where}: the conditions CSV and the timeline file disagree on trial {i + 1}")
+        empty(row, ["sentence_id", "panel_code"] + rating_columns, where)
+        answers = expected.answers[i] if i < len(expected.answers) else []
+        correct = 0
+        for q in range(4):
+            response, flag = row[f"q{q + 1}_response"], row[f"q{q + 1}_correct"]
+            if q >= len(trial["questions"]):
+                empty(row, [f"q{q + 1}_response", f"q{q + 1}_correct"], where)
+                continue
+            question = trial["questions"][q]
+            letter = LETTERS[answers[q]] if q < len(answers) else "?"
+            right = "1" if letter == question["correct_letter"] else "0"
+            correct += int(right)
+            if response != letter:
+                failures.append(f"{where}: q{q + 1}_response is {response!r}, the responder chose {letter}")
+            if flag != right:
+                failures.append(f"{where}: q{q + 1}_correct is {flag!r}; {letter} against the key "
+                                f"{question['correct_letter']} is {right}")
+        if row["n_correct"] != str(correct):
+            failures.append(f"{where}: n_correct is {row['n_correct']!r}, expected {correct}")
+        whole_ms(row, where)
+    for i, trial in enumerate(phase2):
+        if len(phase1) + i >= len(records):
+            break
+        row, where = records[len(phase1) + i], f"{who} phase-2 row {i + 1}"
+        scheduled = conditions2[i] if i < len(conditions2) else {}
+        code = scheduled.get("panel_code", "")
+        wanted = {"participant": who, "phase": "2", "trial": str(i + 1), "sentence_id": trial["sentence"],
+                  "panel_code": code}
+        for column, value in wanted.items():
+            if row[column] != value:
+                failures.append(f"{where}: {column} is {row[column]!r}, expected {value!r}")
+        if scheduled.get("sentence_id") != trial["sentence"] or code != trial["panel_code"]:
+            failures.append(f"{where}: the conditions CSV and the timeline file disagree on trial {i + 1}")
+        empty(row, ["story_id", "version"] + question_columns, where)
+        given = expected.ratings[i] if i < len(expected.ratings) else []
+        by_version = {}
+        for k, letter in enumerate(code):
+            panel = "abcdefghij"[k]
+            value = str(given[k]) if k < len(given) else "?"
+            if row.get(f"rating_{panel}") != value:
+                failures.append(f"{where}: rating_{panel} is {row.get(f'rating_{panel}')!r}, the responder gave {value}")
+            by_version[VERSION_OF_LETTER[letter]] = value
+        for panel in "abcd"[len(code):]:
+            empty(row, [f"rating_{panel}"], where)
+        for version in VERSION_OF_LETTER.values():
+            value = by_version.get(version, "")
+            if row[f"rating_{version}"] != value:
+                failures.append(f"{where}: rating_{version} is {row[f'rating_{version}']!r}; panel code {code} "
+                                f"puts {version} where the responder gave {value or '(nothing)'}")
+        whole_ms(row, where)
+    return failures
+
+
+def mutations(text):
+    """Copies of a correct CSV, each wrong in one way the checker must notice."""
+    lines = text.split("\r\n")
+    header, body = lines[0], [line for line in lines[1:] if line]
+    columns = header.split(",")
+    out = {}
+
+    def rows_to_text(rows):
+        return "\r\n".join([header] + rows) + "\r\n"
+
+    def edit(row_index, change):
+        fields = body[row_index].split(",")
+        change(fields)
+        rows = list(body)
+        rows[row_index] = ",".join(fields)
+        return rows_to_text(rows)
+
+    phase2_rows = [i for i, line in enumerate(body) if line.split(",")[1] == "2"]
+    phase1_rows = [i for i, line in enumerate(body) if line.split(",")[1] == "1"]
+    if phase2_rows:
+        point, vector = columns.index("rating_point"), columns.index("rating_vector")
+
+        def swap(fields):
+            fields[point], fields[vector] = fields[vector], fields[point]
+        out["rating_point and rating_vector swapped in the first phase-2 row"] = edit(phase2_rows[0], swap)
+    if phase1_rows:
+        flag = columns.index("q1_correct")
+
+        def flip(fields):
+            fields[flag] = "0" if fields[flag] == "1" else "1"
+        out["q1_correct flipped in the first phase-1 row"] = edit(phase1_rows[0], flip)
+    if len(phase1_rows) >= 2:
+        rows = list(body)
+        rows[phase1_rows[0]], rows[phase1_rows[1]] = rows[phase1_rows[1]], rows[phase1_rows[0]]
+        out["the first two phase-1 rows swapped"] = rows_to_text(rows)
+    out["the last row missing"] = rows_to_text(body[:-1])
+    out["a column renamed (rating_a -> rating_A)"] = text.replace("rating_a,", "rating_A,", 1)
+    return out
+
+
+class QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *arguments):
+        pass
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("folder", help="the study's output folder (holding experiment/)")
+    parser.add_argument("--participants", nargs=2, metavar="ID", help="the two participants (default: the first two)")
+    parser.add_argument("--screenshots", metavar="DIR", help="save a phase-1 question page and a phase-2 rating page here")
+    parser.add_argument("--results", metavar="DIR", help="keep the saved CSV files here")
+    parser.add_argument("--width", type=int, default=1280)
+    parser.add_argument("--height", type=int, default=900)
+    parser.add_argument("--session-timeout", type=float, default=120.0, help="seconds per session")
+    parser.add_argument("--timeout", type=float, default=300.0, help="seconds for the whole run")
+    parser.add_argument("--chromium", help="the browser (default: $CHROMIUM, else chromium on PATH)")
+    parser.add_argument("--chromedriver", help="the driver (default: $CHROMEDRIVER, else chromedriver on PATH)")
+    args = parser.parse_args()
+
+    missing = []
+    try:
+        import selenium  # noqa: F401  (only whether it is there)
+    except ImportError:
+        missing.append(f"the Python package selenium for {sys.executable} (Debian: python3-selenium; "
+                       "run this script with /usr/bin/python3)")
+    chromium = find_program(args.chromium, "CHROMIUM", ["/usr/bin/chromium", "chromium", "chromium-browser", "google-chrome"])
+    if not chromium:
+        missing.append("the browser chromium")
+    chromedriver = find_program(args.chromedriver, "CHROMEDRIVER", ["/usr/bin/chromedriver", "chromedriver"])
+    if not chromedriver:
+        missing.append("chromedriver (Debian: chromium-driver)")
+    if missing:
+        loud(["SKIPPED: the experiment's browser run needs what is missing here:"]
+             + [f"  - {m}" for m in missing] + [f"install with: {INSTALL_HINT}"])
+        return SKIP
+
+    folder = pathlib.Path(args.folder).resolve()
+    page = folder / "experiment" / "index.html"
+    if not page.is_file():
+        print(f"run_experiment: FAIL: {page} does not exist (render the study with --experiment jspsych)", file=sys.stderr)
+        return 1
+    study = json.loads((folder / "manifest.json").read_text(encoding="utf-8"))["study"]
+    ids = args.participants or [p["id"] for p in study["participants"][:2]]
+    if len(ids) < 2:
+        print("run_experiment: FAIL: the study has fewer than two participants", file=sys.stderr)
+        return 1
+    all_ids = [p["id"] for p in study["participants"]]
+
+    downloads = tempfile.mkdtemp(prefix="signstim-experiment-downloads-")
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(QuietHandler, directory=str(folder)))
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+
+    from selenium import webdriver
+    from selenium.common.exceptions import WebDriverException
+    from selenium.webdriver.chrome.service import Service
+
+    options = webdriver.ChromeOptions()
+    options.binary_location = chromium
+    for argument in ["--headless=new", "--disable-gpu", "--autoplay-policy=no-user-gesture-required",
+                     f"--window-size={args.width},{args.height}", "--hide-scrollbars", "--disable-dev-shm-usage",
+                     "--no-first-run", "--mute-audio"] + (["--no-sandbox"] if os.geteuid() == 0 else []):
+        options.add_argument(argument)
+    options.add_experimental_option("prefs", {"download.default_directory": downloads,
+                                              "download.prompt_for_download": False})
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    service = Service(chromedriver)
+
+    def give_up():
+        print(f"run_experiment: FAIL: the run did not finish within {args.timeout:g} s (--timeout); killing the browser",
+              file=sys.stderr, flush=True)
+        if service.process is not None:
+            kill_tree(service.process.pid)
+        os._exit(1)
+
+    watchdog = threading.Timer(args.timeout, give_up)
+    watchdog.daemon = True
+    watchdog.start()
+    try:
+        driver = webdriver.Chrome(service=service, options=options)
+    except WebDriverException as error:
+        if service.process is not None:
+            kill_tree(service.process.pid)
+        first = str(error).strip().splitlines()[0] if str(error).strip() else "(no message)"
+        loud([f"SKIPPED: could not start {chromium} through {chromedriver}:", "  " + first,
+              "the browser and its driver must be the same version; install with: " + INSTALL_HINT])
+        return SKIP
+
+    failures, notes, saved = [], [], {}
+    try:
+        driver.set_page_load_timeout(60)
+        driver.set_script_timeout(60)
+        driver.execute_cdp_cmd("Browser.setDownloadBehavior", {"behavior": "allow", "downloadPath": downloads})
+        session = Session(driver, args, args.screenshots)
+        # Without ?participant= the page lists the participants, each a link to their session.
+        driver.get(page.as_uri())
+        listed = driver.execute_script(
+            "return Array.from(document.querySelectorAll('ul.signstim-participants a'), (a) => [a.innerText, a.href])")
+        if [name for name, _ in listed] != all_ids or not all(href.endswith(f"?participant={name}") for name, href in listed):
+            failures.append(f"the page without ?participant= lists {listed}, expected links to {all_ids}")
+        session.screenshot("participants.png")
+        for entry in driver.get_log("browser"):
+            if entry.get("level") == "SEVERE":
+                failures.append(f"participant list: console error: {entry.get('message', '').strip()}")
+        for number, participant in enumerate(ids):
+            base = folder / "participants" / participant
+            expected = Expected(
+                participant,
+                json.loads((base / f"{participant}_timeline_variables.json").read_text(encoding="utf-8")),
+                read_conditions(base / f"{participant}_conditions.csv"))
+            over_http = number == 1
+            url = (f"http://127.0.0.1:{server.server_address[1]}/experiment/index.html?participant={participant}"
+                   if over_http else page.as_uri() + f"?participant={participant}")
+            start = time.monotonic()
+            try:
+                data = session.run(url, all_ids.index(participant), expected, downloads, over_http)
+            except Failure as failure:
+                failures.append(str(failure))
+                continue
+            finally:
+                for entry in driver.get_log("browser"):
+                    if entry.get("level") == "SEVERE":
+                        failures.append(f"{participant}: console error: {entry.get('message', '').strip()}")
+            if args.results:
+                pathlib.Path(args.results).mkdir(parents=True, exist_ok=True)
+                (pathlib.Path(args.results) / f"signstim-results_{participant}.csv").write_bytes(data)
+            problems = check_results(data, expected)
+            failures += problems
+            saved[participant] = (data.decode("utf-8"), expected)
+            notes.append(f"{participant} ({'http://127.0.0.1' if over_http else 'file://'}): "
+                         f"{len(expected.answers)} stories, {len(expected.ratings)} rating pages in "
+                         f"{time.monotonic() - start:.1f} s; signstim-results_{participant}.csv "
+                         f"{'matches' if not problems else 'does NOT match'} the schedule and the responses")
+        # The checker must be able to fail: each mutation of a good CSV is rejected.
+        if saved and not failures:
+            participant, (text, expected) = next(iter(saved.items()))
+            for what, bad in mutations(text).items():
+                if not check_results(bad, expected):
+                    failures.append(f"the checker accepted a CSV with {what}: it cannot catch that mistake")
+                else:
+                    notes.append(f"negative check: a CSV with {what} is rejected")
+    except WebDriverException as error:
+        failures.append(f"the browser failed: {str(error).strip().splitlines()[0] if str(error).strip() else error}")
+    finally:
+        try:
+            driver.quit()
+        except WebDriverException:
+            pass
+        server.shutdown()
+        watchdog.cancel()
+        for leftover in pathlib.Path(downloads).iterdir():
+            leftover.unlink()
+        os.rmdir(downloads)
+
+    for note in notes:
+        print(f"run_experiment: {note}")
+    if failures:
+        print(f"run_experiment: FAIL: {len(failures)} problem(s) in {folder}/experiment:", file=sys.stderr)
+        for failure in failures:
+            print(f"  - {failure}", file=sys.stderr)
+        return 1
+    print(f"run_experiment: PASS: {folder}/experiment")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
