@@ -50,11 +50,27 @@ TEST(StudyBrowser, JsPsychExperimentRunsTwoParticipantsAndSavesWhatTheyAnswered)
     ASSERT_EQ(run.status, 0) << run.output;
     ASSERT_TRUE(fs::exists(dir / "experiment" / "index.html"));
     const fs::path runner = fs::path(SIGNSTIM_SOURCE_DIR) / "tests" / "browser" / "run_experiment.py";
+    const fs::path results = dir.parent_path() / "experiment-results";
+    fs::remove_all(results);
+    fs::create_directories(results);
     const auto check = runShell(shellQuote(SIGNSTIM_BROWSER_PYTHON) + " " + shellQuote(runner.string()) + " " +
                                 shellQuote(dir.string()) + " --screenshots " +
-                                shellQuote((dir.parent_path() / "experiment-screens").string()));
+                                shellQuote((dir.parent_path() / "experiment-screens").string()) + " --results " +
+                                shellQuote(results.string()));
     if (check.status == 77) GTEST_SKIP() << check.output;
-    EXPECT_EQ(check.status, 0) << check.output;
+    ASSERT_EQ(check.status, 0) << check.output;
+
+    // The loop closes: what the two participants saved analyses into the report, as saved,
+    // with no data warning (every answer re-scored and every rating unmapped agrees).
+    const fs::path report = dir.parent_path() / "experiment-report";
+    fs::remove_all(report);
+    const auto analysis = runSignstim("analyze " + shellQuote(results.string()) + " --strict --study " +
+                                      shellQuote(dir.string()) + " --out " + shellQuote(report.string()));
+    ASSERT_EQ(analysis.status, 0) << analysis.output;
+    EXPECT_TRUE(fs::exists(report / "report.html"));
+    const std::string summary = signstim::test::readFile(report / "summary.json");
+    EXPECT_NE(summary.find("P01"), std::string::npos) << summary.substr(0, 2000);
+    EXPECT_NE(summary.find("P02"), std::string::npos) << summary.substr(0, 2000);
 }
 
 }  // namespace
