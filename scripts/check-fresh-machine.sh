@@ -127,6 +127,15 @@ fi
 } >"$root/etc/apt/sources.list"
 rm -f "$root"/etc/apt/sources.list.d/*
 cp -L /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
+# What an installed Debian has and debootstrap's minbase lacks: /etc/hosts (without it
+# "localhost" does not resolve, and Selenium cannot reach chromedriver on localhost).
+[[ -e $root/etc/hosts ]] || printf '127.0.0.1\tlocalhost\n::1\t\tlocalhost ip6-localhost ip6-loopback\n' >"$root/etc/hosts"
+# This machine's own local certificate authorities (a site's HTTPS proxy), as its resolver
+# and mirror above: the ca-certificates package that setup installs in the root picks them up.
+if compgen -G "/usr/local/share/ca-certificates/*.crt" >/dev/null; then
+  mkdir -p "$root/usr/local/share/ca-certificates"
+  cp /usr/local/share/ca-certificates/*.crt "$root/usr/local/share/ca-certificates/"
+fi
 say "root ready in $((SECONDS - t0)) s"
 
 for m in proc sys dev dev/pts; do
