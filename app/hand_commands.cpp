@@ -65,7 +65,8 @@ void runShapes(const HandOptions& o) {
 
 void runPose(const HandOptions& o) {
     const hand::HandModel model = modelFor(o);
-    const stimuli::Handshape& shape = library(o, model).at(o.shape);
+    // A copy: a reference into the temporary library would dangle (found by ASan).
+    const stimuli::Handshape shape = library(o, model).at(o.shape);
     const hand::Side side = o.side == "left" ? hand::Side::Left : hand::Side::Right;
     const hand::HandPose pose = hand::forwardKinematics(model, shape.controls, side);
     // Never print a non-finite number (JSON would say null): the controls are range-checked on
