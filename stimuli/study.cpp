@@ -63,7 +63,8 @@ public:
 
 private:
     void knownKeys(const json& object, const std::string& pointer, std::initializer_list<const char*> known) {
-        for (const auto& [key, value] : object.items()) {
+        for (const auto& item : object.items()) {
+            const std::string& key = item.key();
             if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) != known.end()) continue;
             std::string list;
             for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);

@@ -152,7 +152,7 @@ GltfBuilder skinnedGltf(bool inverseBind) {
         matrices[16 + 13] = -1.0f;  // second joint: translate by -1 in Y
         skin["inverseBindMatrices"] = b.addFloats(matrices, "MAT4", 16);
     }
-    b.doc["skins"] = {skin};
+    b.doc["skins"] = nlohmann::json::array({skin});  // not {skin}: clang reads that as a copy of skin
     return b;
 }
 }  // namespace
