@@ -6,12 +6,16 @@
 # inside it, printing the time of each and the last lines of a failure.
 #
 # Usage: scripts/check-fresh-machine.sh [--preflight] [--keep] [--no-cache] [--with-slurm]
+#                                       [--with-sanitizers]
 #   --preflight  only say whether the check can run here (exit 0) or why not (exit 77)
 #   --keep       keep the root afterwards (its path is printed)
 #   --no-cache   rebuild the bare root with debootstrap even when a cached one exists
 #   --with-slurm between the two commands, also `scripts/setup.sh --with-slurm` (the optional
 #                Slurm and munge packages), so that the test of the Slurm scripts runs in the
 #                root instead of being skipped
+#   --with-sanitizers after the two commands, `scripts/setup.sh --with-sanitizers` (clang) and
+#                scripts/sanitize.sh: the whole suite under ASan+UBSan and a smoke run of every
+#                fuzz target (docs/fuzzing.md)
 #
 # The mirror comes from this machine's own apt configuration (never a host written here).
 # The bare root (nothing but debootstrap's minbase) is cached as a tarball under
@@ -21,14 +25,15 @@
 # 77 the check cannot run here (not root, no debootstrap, mirror unreachable).
 set -euo pipefail
 
-preflight=0 keep=0 use_cache=1 with_slurm=0
+preflight=0 keep=0 use_cache=1 with_slurm=0 with_sanitizers=0
 for arg in "$@"; do
   case "$arg" in
     --preflight) preflight=1 ;;
     --keep) keep=1 ;;
     --no-cache) use_cache=0 ;;
     --with-slurm) with_slurm=1 ;;
-    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --with-sanitizers) with_sanitizers=1 ;;
+    -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "check-fresh-machine: unknown option '$arg' (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -177,8 +182,12 @@ failed=0
 run_in_root "main-job" ./run.sh || failed=1
 if ((with_slurm)) && ! ((failed)); then run_in_root "slurm-packages" scripts/setup.sh --with-slurm || failed=1; fi
 ((failed)) || run_in_root "test-suite" ./run.sh test || failed=1
+if ((with_sanitizers)) && ! ((failed)); then
+  run_in_root "sanitizer-packages" scripts/setup.sh --with-sanitizers || failed=1
+  ((failed)) || run_in_root "sanitizer-suite" scripts/sanitize.sh || failed=1
+fi
 
 say "times on this machine ($(nproc) cores):"
 printf '  %s\n' "${times[@]}"
-((failed)) && { say "FAILED: the README's quick start does not work on a fresh Debian 12 root"; exit 1; }
-say "passed: both README commands work on a fresh Debian 12 root"
+((failed)) && { say "FAILED on a fresh Debian 12 root (above)"; exit 1; }
+say "passed: both README commands work on a fresh Debian 12 root$( ((with_sanitizers)) && echo ", and the sanitizer suite and fuzz smoke runs are clean")"

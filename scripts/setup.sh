@@ -4,20 +4,24 @@
 # Idempotent; runs apt-get as root, or through sudo when not root. Prints what it installs
 # and that it is done; apt's own output goes to a log, shown only when apt fails.
 #
-# Usage: scripts/setup.sh [--with-slurm]
+# Usage: scripts/setup.sh [--with-slurm] [--with-sanitizers]
 #   --with-slurm  also Slurm and munge (slurm-wlm munge, ~13 MB), only for the test of the
 #                 Slurm scripts (tests/slurm, docs/slurm.md), which is skipped without them.
 #                 Not by default: they are daemons (on a systemd machine their services are
 #                 enabled on install), and on a cluster's login node Debian's sbatch could
 #                 shadow the site's own Slurm.
+#   --with-sanitizers  also clang, its sanitizer and libFuzzer runtimes and llvm-symbolizer
+#                 (clang libclang-rt-14-dev llvm), for scripts/sanitize.sh and scripts/fuzz.sh
+#                 (docs/fuzzing.md); CI runs both.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-with_slurm=0
+with_slurm=0 with_sanitizers=0
 for arg in "$@"; do
   case "$arg" in
     --with-slurm) with_slurm=1 ;;
-    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --with-sanitizers) with_sanitizers=1 ;;
+    -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "setup: unknown option '$arg' (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -43,6 +47,8 @@ packages=(
   curl ca-certificates
 )
 ((with_slurm)) && packages+=(slurm-wlm munge)
+# Debian 12's clang is clang-14; --no-install-recommends would leave out its runtimes.
+((with_sanitizers)) && packages+=(clang libclang-rt-14-dev llvm)
 
 # jsPsych is needed only by `signstim study --experiment jspsych`: without a network it is a
 # warning, and everything else still builds and runs (that test is then skipped).
