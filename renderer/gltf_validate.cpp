@@ -192,6 +192,20 @@ private:
             }
             fail("", "not a glTF file: invalid JSON at byte " + std::to_string(e.byte) +
                          (isGlb_ ? " of the JSON chunk" : ""), line);
+        } catch (const json::out_of_range& e) {
+            // 406: a number beyond a double ("1e400"). nlohmann gives no position, only the
+            // literal: its first occurrence gives the byte and line (found by the fuzzer: it
+            // was an internal error, exit 4).
+            const std::string what = e.what();
+            const std::size_t open = what.find('\''), close = what.rfind('\'');
+            const std::string literal = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+            const std::size_t byte = literal.empty() ? std::string::npos : jsonText_.find(literal);
+            int line = 0;
+            if (!isGlb_ && byte != std::string::npos)
+                line = 1 + static_cast<int>(std::count(jsonText_.begin(), jsonText_.begin() + static_cast<long>(byte), '\n'));
+            fail("", "not a glTF file: the number " + (literal.empty() ? std::string("") : "'" + literal + "' ") +
+                         (byte != std::string::npos ? "at byte " + std::to_string(byte) + (isGlb_ ? " of the JSON chunk " : " ") : "") +
+                         "does not fit a double (at most about 1.8e308 in size)", line);
         }
         if (!root_.is_object()) fail("", "not a glTF file: the JSON top level is not an object");
         const auto asset = root_.find("asset");

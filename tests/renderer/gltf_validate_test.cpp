@@ -214,3 +214,15 @@ TEST(GltfValidate, UrisResolveAgainstAndStayInsideTheBaseDirectory) {
     options.allowedDirectories = {dir / "outside"};
     EXPECT_NO_THROW(validateGltfBytes(withUri("../outside/data.bin"), "in-memory.gltf", base, options));
 }
+
+// Found by the fuzzer (tests/fuzz/regressions/gltf_*/number-overflow-406): a number beyond a
+// double was nlohmann's out_of_range escaping as an internal error (exit 4). It is bad input,
+// named with its line, in .gltf and .glb alike.
+TEST(GltfValidate, NumberBeyondADoubleIsBadInputNamingItsLine) {
+    const std::string text = "{\"asset\": {\"version\": \"2.0\"},\n \"scene\": 1e400}";
+    const InputError error = refusal([&] { validateGltfBytes(text, "big.gltf", {}, {}); });
+    EXPECT_EQ(error.file(), "big.gltf");
+    EXPECT_EQ(error.line(), 2);
+    EXPECT_NE(std::string(error.what()).find("'1e400'"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("does not fit a double"), std::string::npos) << error.what();
+}
