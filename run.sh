@@ -18,7 +18,8 @@ installed=$SECONDS
 
 build=${SIGNSTIM_BUILD_DIR:-build}
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+# -g1 (line tables: backtraces name file and line) instead of -g: a third less compile time.
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" >/dev/null
 cmake --build "$build" -j "$jobs"
 echo "run.sh: install $((installed - start)) s, build $((SECONDS - installed)) s"
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
+#include <typeinfo>
 
 namespace signstim::fuzz {
 namespace {
@@ -27,6 +29,17 @@ const Target* findTarget(std::string_view name) {
     for (const Target& t : registry())
         if (name == t.name) return &t;
     return nullptr;
+}
+
+void runTarget(const Target& target, std::string_view input) {
+    try {
+        target.run(input);
+    } catch (const std::exception& e) {
+        fail(std::string("an exception escaped (the command would exit 4, internal error): ") + typeid(e).name() +
+             ": " + e.what());
+    } catch (...) {
+        fail("an exception of an unknown type escaped");
+    }
 }
 
 void fail(const std::string& message) {

@@ -34,6 +34,10 @@ struct Registration {
     Registration(const char* name, TargetFunction run);
 };
 
+// Runs `target` on `input`; an exception it lets escape is a finding, reported with its type
+// and message (what the command would print as an internal error) before aborting.
+void runTarget(const Target& target, std::string_view input);
+
 // A finding that is not a crash by itself: aborts with the message (libFuzzer then keeps the
 // input). Used for broken promises such as a non-finite number accepted.
 [[noreturn]] void fail(const std::string& message);

@@ -13,6 +13,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         return t;
     }();
-    target->run(std::string_view(reinterpret_cast<const char*>(data), size));
+    signstim::fuzz::runTarget(*target, std::string_view(reinterpret_cast<const char*>(data), size));
     return 0;
 }

@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
             return 3;
         }
         std::cout << target->name << ": " << file.string() << std::endl;
-        target->run(bytes.str());
+        runTarget(*target, bytes.str());
     }
     std::cout << target->name << ": " << files.size() << " input(s), no finding\n";
     return 0;
