@@ -111,19 +111,24 @@ if ((runs > 0)); then what="$runs executions each"; else what="$seconds s each";
 echo "fuzz: ${#names[@]} target(s), $what, $jobs at a time; logs in $work/logs/"
 declare -A pid_of
 failed=0
-results=()
+printf '%-20s %12s %8s %6s %7s %6s  %s\n' target executions exec/s cov ft corpus result
+report_finished() {  # prints each target as it ends (a long run shows its progress)
+  local name status
+  for name in "${!pid_of[@]}"; do
+    kill -0 "${pid_of[$name]}" 2>/dev/null && continue
+    status=0
+    wait "${pid_of[$name]}" || status=$?
+    ((status == 0)) || failed=1
+    summary "$name" "$status"
+    unset "pid_of[$name]"
+  done
+}
 for name in "${names[@]}"; do
-  while (($(jobs -rp | wc -l) >= jobs)); do wait -n || true; done
+  while (($(jobs -rp | wc -l) >= jobs)); do wait -n || true; report_finished; done
   fuzz_one "$name" &
   pid_of[$name]=$!
 done
-printf '%-20s %12s %8s %6s %7s %6s  %s\n' target executions exec/s cov ft corpus result
-for name in "${names[@]}"; do
-  status=0
-  wait "${pid_of[$name]}" || status=$?
-  ((status == 0)) || failed=1
-  summary "$name" "$status"
-done
+while ((${#pid_of[@]})); do wait -n || true; report_finished; done
 if ((failed)); then
   echo "fuzz: a finding (above). Replay one: $build/tests/fuzz/signstim_fuzz_NAME FILE; once fixed, keep it:"
   echo "      cp FILE tests/fuzz/regressions/NAME/ (the test suite replays it: ctest -R fuzz.replay.NAME)"
