@@ -142,7 +142,9 @@ TEST(GltfValidate, BrokenBytesAreRefusedAsTheFileIs) {
         {"syntax.gltf", gltf},
         {"empty.gltf", ""},
     };
-    for (const auto& [name, bytes] : broken) {
+    for (const auto& entry : broken) {
+        const std::string& name = entry.first;  // not a structured binding: clang 14 cannot capture one
+        const std::string& bytes = entry.second;
         const fs::path path = dir / name;
         std::ofstream(path, std::ios::binary) << bytes;
         const InputError fromFile = refusal([&] { loadGltf(path); });
