@@ -14,7 +14,7 @@
 #                Slurm and munge packages), so that the test of the Slurm scripts runs in the
 #                root instead of being skipped
 #   --with-sanitizers after the two commands, `scripts/setup.sh --with-sanitizers` (clang) and
-#                scripts/sanitize.sh: the whole suite under ASan+UBSan and a smoke run of every
+#                scripts/sanitize.sh: the suite under ASan+UBSan and a smoke run of every
 #                fuzz target (docs/fuzzing.md)
 #
 # The mirror comes from this machine's own apt configuration (never a host written here).

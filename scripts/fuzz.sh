@@ -64,8 +64,8 @@ if [[ ! -f $build/CMakeCache.txt ]] || ! grep -q '^SIGNSTIM_FUZZ:BOOL=ON' "$buil
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1" -DSIGNSTIM_FUZZ=ON -DSIGNSTIM_BUILD_TESTS=OFF \
     -DCMAKE_CXX_COMPILER_LAUNCHER=$(command -v ccache || true) >/dev/null
 fi
-cmake --build "$build" -j "$(nproc 2>/dev/null || echo 2)" --target "${names[@]/#/signstim_fuzz_}" >/dev/null ||
-  { echo "fuzz: the build failed: cmake --build $build --target signstim_fuzz_${names[0]}" >&2; exit 1; }
+cmake --build "$build" -j "$(nproc 2>/dev/null || echo 2)" --target signstim_fuzz >/dev/null ||
+  { echo "fuzz: the build failed: cmake --build $build --target signstim_fuzz" >&2; exit 1; }
 
 # ---- the runs -----------------------------------------------------------------------------
 work=$build/fuzz
@@ -87,7 +87,7 @@ fuzz_one() {
   local options=("${limit[@]}" -print_final_stats=1 -timeout=10 -rss_limit_mb=2048 -max_len=65536
                  -artifact_prefix="$findings/")
   [[ ${dict[$name]} != - ]] && options+=(-dict="tests/fuzz/dictionaries/${dict[$name]}.dict")
-  "$build/tests/fuzz/signstim_fuzz_$name" "${options[@]}" "$corpus" >"$log" 2>&1
+  "$build/tests/fuzz/signstim_fuzz" --target="$name" "${options[@]}" "$corpus" >"$log" 2>&1
 }
 
 summary() {  # name -> "executions  exec/s  coverage  features  corpus  result"
@@ -130,7 +130,7 @@ for name in "${names[@]}"; do
 done
 while ((${#pid_of[@]})); do wait -n || true; report_finished; done
 if ((failed)); then
-  echo "fuzz: a finding (above). Replay one: $build/tests/fuzz/signstim_fuzz_NAME FILE; once fixed, keep it:"
+  echo "fuzz: a finding (above). Replay one: $build/tests/fuzz/signstim_fuzz --target=NAME FILE; once fixed, keep it:"
   echo "      cp FILE tests/fuzz/regressions/NAME/ (the test suite replays it: ctest -R fuzz.replay.NAME)"
   exit 1
 fi

@@ -6,8 +6,8 @@
 // else escaping — another exception (the command's "internal error", exit 4), an abort, a
 // sanitizer report, an accepted value that breaks the parser's own promises (a NaN read, a
 // line number of 0 in a refusal) — is a finding. The same targets run two ways:
-//   - libFuzzer binaries (signstim_fuzz_NAME, built with -DSIGNSTIM_FUZZ=ON and clang;
-//     scripts/fuzz.sh), one target each;
+//   - the libFuzzer binary signstim_fuzz --target=NAME (built with -DSIGNSTIM_FUZZ=ON and
+//     clang; scripts/fuzz.sh);
 //   - signstim_fuzz_replay NAME FILE|DIR..., in the ordinary test suite: every seed and every
 //     kept finding (tests/fuzz/regressions/NAME/) through its target, so a fixed crash stays
 //     fixed in every build, sanitized or not.
