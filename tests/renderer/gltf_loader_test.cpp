@@ -17,14 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path testDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "test-tmp" / "gltf_loader" /
-                         (std::string(info->test_suite_name()) + "." + info->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path testDir() { return freshTestDir("gltf_loader"); }
 
 void expectNear(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
     EXPECT_NEAR(a.x, b.x, eps);

@@ -1,6 +1,7 @@
 #pragma once
 // Builds small glTF files for the tests by hand (JSON + binary), so the loader is checked
 // against files not produced by our own writer. No downloaded assets.
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -11,6 +12,16 @@
 #include <vector>
 
 namespace signstim::render::testing {
+
+// An empty folder for the running test: build/test-tmp/AREA/Suite.Name.
+inline std::filesystem::path freshTestDir(const std::string& area) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::filesystem::path dir = std::filesystem::path(SIGNSTIM_BINARY_DIR) / "test-tmp" / area /
+                                      (std::string(info->test_suite_name()) + "." + info->name());
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
 
 inline std::string base64(const std::vector<std::uint8_t>& data) {
     static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";

@@ -22,14 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path testDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path dir = fs::path(SIGNSTIM_BINARY_DIR) / "test-tmp" / "gltf_validate" /
-                         (std::string(info->test_suite_name()) + "." + info->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path testDir() { return freshTestDir("gltf_validate"); }
 
 std::string readBytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
