@@ -4,7 +4,7 @@
 #include "common/error.hpp"
 #include "common/sha256.hpp"
 #include "stimuli/json_source.hpp"
-#include "stimuli/study.hpp"
+#include "stimuli/study/study.hpp"
 
 #include <algorithm>
 #include <cctype>

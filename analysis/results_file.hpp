@@ -1,6 +1,6 @@
 #pragma once
 // Experiment results, one CSV per participant (docs/analysis.md, "Inputs"), read and checked
-// against the study that was shown (its manifest's listing, stimuli/study_listing.hpp):
+// against the study that was shown (its manifest's listing, stimuli/study/study_listing.hpp):
 //  - every participant, story, sentence and version must be the study's, and each trial what
 //    the design showed that participant (the version of each story, the panel code of each
 //    sentence); a mistake is an InputError naming file:line and the column (exit 2);
@@ -10,7 +10,7 @@
 //    ones analysed), as are missing answers, ratings and trials.
 // Columns are found by name (any order; other columns are ignored); a ColumnMap renames them
 // for files written by PsychoPy, Gorilla or other software.
-#include "stimuli/study_listing.hpp"
+#include "stimuli/study/study_listing.hpp"
 
 #include <cstddef>
 #include <filesystem>

@@ -10,7 +10,7 @@
 // All draws come from SplitMix64 (common/random.hpp), seeded from (seed, participant id), so a
 // participant's data do not depend on how many others there are. The files say SYNTHETIC in
 // their name and in a comment line before the header; the analysis report says so too.
-#include "stimuli/study_listing.hpp"
+#include "stimuli/study/study_listing.hpp"
 
 #include <cstdint>
 #include <string>

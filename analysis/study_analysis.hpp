@@ -11,7 +11,7 @@
 // significant when its Holm-adjusted p and the Kruskal–Wallis p are both below alpha.
 #include "analysis/rank_tests.hpp"
 #include "analysis/results_file.hpp"
-#include "stimuli/study_listing.hpp"
+#include "stimuli/study/study_listing.hpp"
 
 #include <cstddef>
 #include <string>

@@ -12,7 +12,7 @@
 #include "renderer/gltf_writer.hpp"
 #include "renderer/image_io.hpp"
 #include "renderer/renderer.hpp"
-#include "stimuli/handshapes.hpp"
+#include "stimuli/story/handshapes.hpp"
 #include "stimuli/scenes_path.hpp"
 
 #include <glm/geometric.hpp>

@@ -12,12 +12,12 @@
 #include "renderer/frame_sink.hpp"
 #include "renderer/image_io.hpp"
 #include "renderer/renderer.hpp"
-#include "stimuli/handshapes.hpp"
+#include "stimuli/story/handshapes.hpp"
 #include "stimuli/scenes_path.hpp"
-#include "stimuli/signing_space.hpp"
-#include "stimuli/verb_models.hpp"
-#include "stimuli/verb_synthesis.hpp"
-#include "stimuli/verbs.hpp"
+#include "stimuli/verbs/signing_space.hpp"
+#include "stimuli/verbs/verb_models.hpp"
+#include "stimuli/verbs/verb_synthesis.hpp"
+#include "stimuli/verbs/verbs.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -6,8 +6,8 @@
 #include "common/error.hpp"
 #include "hand/hand_model.hpp"
 #include "hand/sensor_hand.hpp"
-#include "stimuli/handshapes.hpp"
-#include "stimuli/sensor_io.hpp"
+#include "stimuli/story/handshapes.hpp"
+#include "stimuli/verbs/sensor_io.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -225,7 +225,7 @@ void registerHandCommands(Commands& commands) {
         "from-sensors",
         "Rebuild the 16-segment hand from six 6-DOF sensors (van Polanen et al.; SPEC §2).\n"
         "SAMPLES.csv: header time,sensor,x,y,z,azimuth,elevation,roll; sensors hand, thumb, index,\n"
-        "middle, ring, little (or 0..5); s, mm, degrees. CAL.json: see stimuli/sensor_io.hpp.\n"
+        "middle, ring, little (or 0..5); s, mm, degrees. CAL.json: see stimuli/verbs/sensor_io.hpp.\n"
         "Writes per sample the joints A-D of each digit and the 8 vertices of each segment.");
     fromSensors->add_option("samples", o->samples, "Samples CSV")->required();
     fromSensors->add_option("--calibration", o->calibration, "Calibration JSON")->required();

@@ -3,15 +3,15 @@
 #include "app/cli_values.hpp"
 #include "app/clip_output.hpp"
 #include "app/commands.hpp"
-#include "app/story_world.hpp"
+#include "stimuli/story/story_world.hpp"
 #include "common/error.hpp"
 #include "signer/clearance.hpp"
 #include "signer/timeline_clip.hpp"
-#include "stimuli/lexicon.hpp"
+#include "stimuli/story/lexicon.hpp"
 #include "stimuli/scenes_path.hpp"
-#include "stimuli/story.hpp"
-#include "stimuli/timeline.hpp"
-#include "stimuli/verb_models.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/story/timeline.hpp"
+#include "stimuli/verbs/verb_models.hpp"
 
 #include <cmath>
 #include <cstdio>

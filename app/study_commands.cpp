@@ -6,7 +6,7 @@
 #include "app/study_runner.hpp"
 #include "common/error.hpp"
 #include "stimuli/scenes_path.hpp"
-#include "stimuli/study.hpp"
+#include "stimuli/study/study.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>

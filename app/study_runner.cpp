@@ -2,9 +2,9 @@
 
 #include "app/cli_values.hpp"
 #include "app/clip_output.hpp"
-#include "app/jspsych_bundle.hpp"
-#include "app/story_world.hpp"
-#include "app/study_documents.hpp"
+#include "stimuli/study/jspsych_bundle.hpp"
+#include "stimuli/story/story_world.hpp"
+#include "stimuli/study/study_documents.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/sha256.hpp"
@@ -17,10 +17,10 @@
 #include "signer/verb_render.hpp"
 #include "stimuli/json_source.hpp"
 #include "stimuli/scenes_path.hpp"
-#include "stimuli/story.hpp"
-#include "stimuli/study.hpp"
-#include "stimuli/study_experiment.hpp"
-#include "stimuli/timeline.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/study/study.hpp"
+#include "stimuli/study/study_experiment.hpp"
+#include "stimuli/story/timeline.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>

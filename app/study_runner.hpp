@@ -10,7 +10,7 @@
 // takes units i, i+N, i+2N, ... of the sorted list. When every unit is complete, the exports,
 // the review page and manifest.json are written (by the run that completes the set, or by
 // `study merge`).
-#include "stimuli/study_listing.hpp"
+#include "stimuli/study/study_listing.hpp"
 
 #include <cstdint>
 #include <filesystem>

@@ -6,15 +6,15 @@
 #include "signer/verb_render.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
-#include "stimuli/corpus.hpp"
-#include "stimuli/evaluation.hpp"
-#include "stimuli/reference_performer.hpp"
+#include "stimuli/verbs/corpus.hpp"
+#include "stimuli/verbs/evaluation.hpp"
+#include "stimuli/verbs/reference_performer.hpp"
 #include "stimuli/scenes_path.hpp"
-#include "stimuli/signing_space.hpp"
-#include "stimuli/sora.hpp"
-#include "stimuli/verb_models.hpp"
-#include "stimuli/verb_synthesis.hpp"
-#include "stimuli/verbs.hpp"
+#include "stimuli/verbs/signing_space.hpp"
+#include "stimuli/verbs/sora.hpp"
+#include "stimuli/verbs/verb_models.hpp"
+#include "stimuli/verbs/verb_synthesis.hpp"
+#include "stimuli/verbs/verbs.hpp"
 
 #include <cstdio>
 #include <memory>

@@ -5,7 +5,7 @@
 // Body frame (torso-fixed, millimetres, right-handed, the glTF avatar's axes):
 //   +y up, +z forward (the way the signer faces), +x the signer's LEFT.
 // A glTF avatar that faces +Z therefore uses it with no rotation. (The signing-space frame of
-// stimuli/signing_space.hpp has +x to the signer's right; the app converts, x -> -x.)
+// stimuli/verbs/signing_space.hpp has +x to the signer's right; the app converts, x -> -x.)
 //
 // Anatomical frames. Every arm segment carries a frame that coincides with the hand model's
 // palm frame (SPEC §1.1: +z toward the fingers, +x palmar, +y toward the thumb of a right

@@ -4,7 +4,7 @@
 #include "signer/signer_pose.hpp"
 #include "renderer/frame.hpp"
 #include "renderer/renderer.hpp"
-#include "stimuli/handshapes.hpp"
+#include "stimuli/story/handshapes.hpp"
 
 #include <cstdint>
 #include <filesystem>

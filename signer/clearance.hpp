@@ -15,7 +15,7 @@
 // turns with the gaze about an axis close to its capsule's, and the torso is not posed.
 #include "hand/contact.hpp"
 #include "signer/signer_pose.hpp"
-#include "stimuli/timeline.hpp"
+#include "stimuli/story/timeline.hpp"
 
 #include <limits>
 #include <string>

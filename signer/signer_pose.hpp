@@ -18,7 +18,7 @@
 //
 // Frames. Wrist targets and gaze points are given in the body frame of hand/arm_ik.hpp
 // (mm, +x the signer's LEFT, +y up, +z forward, origin at the chest). Verb data lives in the
-// signing-space frame of stimuli/signing_space.hpp (+x the signer's RIGHT); convert with
+// signing-space frame of stimuli/verbs/signing_space.hpp (+x the signer's RIGHT); convert with
 // bodyFromSigningSpace(). The origin (the chest) is 130 mm below the midpoint of the
 // shoulder joints, as in the default avatar.
 #include "hand/arm_ik.hpp"

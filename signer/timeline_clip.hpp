@@ -1,5 +1,5 @@
 #pragma once
-// A story timeline (stimuli/timeline.hpp) as a clip of the signer: each frame samples the
+// A story timeline (stimuli/story/timeline.hpp) as a clip of the signer: each frame samples the
 // timeline's hands and gaze and resolves them on the rig — a resting hand goes to the rig's
 // resting place, relaxed; a keyed hand to its wrist target and handshape; gaze toward the
 // viewer or a referent.
@@ -15,7 +15,7 @@
 // ends when an item there has them touching. A detour depends only on the keys at its ends,
 // so frames outside the verb slots stay the same in every version.
 #include "signer/verb_render.hpp"
-#include "stimuli/timeline.hpp"
+#include "stimuli/story/timeline.hpp"
 
 #include <optional>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// From verb performances (stimuli/verb_synthesis.hpp) to frames of the signer.
+// From verb performances (stimuli/verbs/verb_synthesis.hpp) to frames of the signer.
 //
 // A clip is: a lead-in in which the hands rise from rest to the verb's first keyframe, the
 // verb itself, a hold on its last keyframe, and nothing else — so that the four versions of
@@ -10,8 +10,8 @@
 #include "renderer/frame.hpp"
 #include "renderer/frame_sink.hpp"
 #include "renderer/renderer.hpp"
-#include "stimuli/handshapes.hpp"
-#include "stimuli/verb_synthesis.hpp"
+#include "stimuli/story/handshapes.hpp"
+#include "stimuli/verbs/verb_synthesis.hpp"
 
 #include <filesystem>
 #include <functional>

@@ -2,7 +2,7 @@
 // naming the file and the line, never 4 ("internal error"), never 0 with null or nan written,
 // and never hangs on a FIFO.
 #include "hand/sensor_hand.hpp"
-#include "stimuli/sensor_io.hpp"
+#include "stimuli/verbs/sensor_io.hpp"
 #include "tests/app/run_command.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The `signstim hand` commands as a user runs them: the built binary, its stdout, stderr,
 // exit status and files.
 #include "hand/sensor_hand.hpp"
-#include "stimuli/sensor_io.hpp"
+#include "stimuli/verbs/sensor_io.hpp"
 #include "tests/app/run_command.hpp"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // under the validation layer into playable MP4s, posters, exports and a manifest; a re-run
 // skips everything; verify catches a changed byte; shards merged equal one run byte for byte;
 // an interrupted run leaves no broken file and resumes to the same bytes.
-#include "stimuli/study_experiment.hpp"
+#include "stimuli/study/study_experiment.hpp"
 #include "tests/app/run_command.hpp"
 
 #include <gtest/gtest.h>

@@ -3,14 +3,14 @@
 // sensor samples and calibration, lexicon, gloss sentences, stories, study files and the
 // study listing a study's plan.json and manifest.json carry.
 #include "common/error.hpp"
-#include "stimuli/corpus.hpp"
-#include "stimuli/gloss.hpp"
+#include "stimuli/verbs/corpus.hpp"
+#include "stimuli/story/gloss.hpp"
 #include "stimuli/json_source.hpp"
-#include "stimuli/reference_performer.hpp"
-#include "stimuli/sensor_io.hpp"
-#include "stimuli/study.hpp"
-#include "stimuli/verb_models.hpp"
-#include "stimuli/verb_synthesis.hpp"
+#include "stimuli/verbs/reference_performer.hpp"
+#include "stimuli/verbs/sensor_io.hpp"
+#include "stimuli/study/study.hpp"
+#include "stimuli/verbs/verb_models.hpp"
+#include "stimuli/verbs/verb_synthesis.hpp"
 #include "tests/fuzz/fixtures.hpp"
 #include "tests/fuzz/fuzz_target.hpp"
 

@@ -3,7 +3,7 @@
 #include "common/error.hpp"
 #include "tests/fuzz/fuzz_target.hpp"
 #include "stimuli/json_source.hpp"
-#include "stimuli/study.hpp"
+#include "stimuli/study/study.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -36,7 +36,7 @@ const stimuli::Lexicon& lexicon() {
 }
 
 const stimuli::StoryVocabulary& storyVocabulary() {
-    // As app/story_world.cpp builds it: the lexicon's glosses; J and Z are a handshape plus a
+    // As stimuli/story/story_world.cpp builds it: the lexicon's glosses; J and Z are a handshape plus a
     // path, the other letters their handshape.
     static const stimuli::StoryVocabulary vocabulary = [] {
         stimuli::StoryVocabulary v;

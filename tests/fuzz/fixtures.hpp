@@ -4,11 +4,11 @@
 // targets; and the checks every target applies to a refusal.
 #include "analysis/results_file.hpp"
 #include "hand/hand_model.hpp"
-#include "stimuli/handshapes.hpp"
-#include "stimuli/lexicon.hpp"
-#include "stimuli/story.hpp"
-#include "stimuli/study_listing.hpp"
-#include "stimuli/verbs.hpp"
+#include "stimuli/story/handshapes.hpp"
+#include "stimuli/story/lexicon.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/study/study_listing.hpp"
+#include "stimuli/verbs/verbs.hpp"
 
 #include <functional>
 #include <string>

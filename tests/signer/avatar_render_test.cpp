@@ -10,7 +10,7 @@
 #include "renderer/gltf_writer.hpp"
 #include "renderer/renderer.hpp"
 #include "app/cli_values.hpp"
-#include "stimuli/handshapes.hpp"
+#include "stimuli/story/handshapes.hpp"
 #include "tests/signer/avatar_variants.hpp"
 #include "tests/renderer/vk_golden.hpp"
 

@@ -6,11 +6,11 @@
 #include "signer/clearance.hpp"
 #include "signer/timeline_clip.hpp"
 #include "signer/verb_render.hpp"
-#include "stimuli/lexicon.hpp"
-#include "stimuli/sora.hpp"
-#include "stimuli/story.hpp"
-#include "stimuli/timeline.hpp"
-#include "stimuli/verb_models.hpp"
+#include "stimuli/story/lexicon.hpp"
+#include "stimuli/verbs/sora.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/story/timeline.hpp"
+#include "stimuli/verbs/verb_models.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

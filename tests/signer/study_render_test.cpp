@@ -6,12 +6,12 @@
 #include "signer/signer_pose.hpp"
 #include "signer/timeline_clip.hpp"
 #include "signer/verb_render.hpp"
-#include "stimuli/handshapes.hpp"
-#include "stimuli/lexicon.hpp"
-#include "stimuli/story.hpp"
-#include "stimuli/timeline.hpp"
-#include "stimuli/verb_models.hpp"
-#include "stimuli/verbs.hpp"
+#include "stimuli/story/handshapes.hpp"
+#include "stimuli/story/lexicon.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/story/timeline.hpp"
+#include "stimuli/verbs/verb_models.hpp"
+#include "stimuli/verbs/verbs.hpp"
 
 #include <gtest/gtest.h>
 

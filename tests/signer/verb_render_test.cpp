@@ -4,9 +4,9 @@
 #include "signer/avatar_render.hpp"
 #include "signer/signer_pose.hpp"
 #include "signer/verb_render.hpp"
-#include "stimuli/handshapes.hpp"
-#include "stimuli/verbs.hpp"
-#include "stimuli/verb_models.hpp"
+#include "stimuli/story/handshapes.hpp"
+#include "stimuli/verbs/verbs.hpp"
+#include "stimuli/verbs/verb_models.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

@@ -3,14 +3,14 @@
 // range or the expected value in the message; nothing non-finite gets through.
 #include "common/error.hpp"
 #include "hand/hand_model.hpp"
-#include "stimuli/corpus.hpp"
-#include "stimuli/handshapes.hpp"
+#include "stimuli/verbs/corpus.hpp"
+#include "stimuli/story/handshapes.hpp"
 #include "stimuli/json_source.hpp"
-#include "stimuli/reference_performer.hpp"
-#include "stimuli/sensor_io.hpp"
-#include "stimuli/verb_models.hpp"
-#include "stimuli/verb_synthesis.hpp"
-#include "stimuli/verbs.hpp"
+#include "stimuli/verbs/reference_performer.hpp"
+#include "stimuli/verbs/sensor_io.hpp"
+#include "stimuli/verbs/verb_models.hpp"
+#include "stimuli/verbs/verb_synthesis.hpp"
+#include "stimuli/verbs/verbs.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // checks of SPEC §2.6 on the McDonald hand's bone capsules), and strict about bad files.
 #include "common/error.hpp"
 #include "hand/contact.hpp"
-#include "stimuli/handshapes.hpp"
+#include "stimuli/story/handshapes.hpp"
 #include "stimuli/scenes_path.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The lexicon (docs/lexicon.md): body locations, touch points placed by the hand model, and
 // every kind of mistake named at its file, line and field.
-#include "stimuli/lexicon.hpp"
+#include "stimuli/story/lexicon.hpp"
 
 #include <gtest/gtest.h>
 

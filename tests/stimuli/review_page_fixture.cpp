@@ -1,6 +1,6 @@
 #include "tests/stimuli/review_page_fixture.hpp"
 
-#include "stimuli/study_design.hpp"
+#include "stimuli/study/study_design.hpp"
 
 #include <cmath>
 #include <cstdio>

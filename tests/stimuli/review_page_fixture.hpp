@@ -3,7 +3,7 @@
 // from stimuli/study_design, SPEC §5 file names) but made without rendering: the unit tests
 // read the page it gives, and the browser fixture (review_page_fixture_main.cpp) writes it
 // to a folder with tiny real MP4s and posters for tests/browser/check_review_page.py.
-#include "stimuli/study_listing.hpp"
+#include "stimuli/study/study_listing.hpp"
 
 #include <cstddef>
 

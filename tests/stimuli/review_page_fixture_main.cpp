@@ -13,7 +13,7 @@
 // expected, so a checker that crashes, or fails for another reason, fails the test. Exit 77
 // (a CTest skip, never a pass) when ffmpeg, the Python or the browser is missing.
 #include "common/atomic_file.hpp"
-#include "stimuli/review_page.hpp"
+#include "stimuli/study/review_page.hpp"
 #include "tests/stimuli/review_page_fixture.hpp"
 
 #include <spawn.h>

@@ -1,9 +1,9 @@
-// The review page (stimuli/review_page.hpp) read as text: every clip referenced with its
+// The review page (stimuli/study/review_page.hpp) read as text: every clip referenced with its
 // expected duration, every text escaped, the panel mappings and answer keys shown, nothing
 // fetched from a network, the same bytes for the same listing. The browser side (it loads and
 // plays in Chromium) is tests/browser/check_review_page.py, run by the review_page_browser
 // tests.
-#include "stimuli/review_page.hpp"
+#include "stimuli/study/review_page.hpp"
 #include "tests/stimuli/review_page_fixture.hpp"
 
 #include <gtest/gtest.h>

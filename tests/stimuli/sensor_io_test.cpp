@@ -1,7 +1,7 @@
 // Sensor files (SPEC §2): calibration JSON and samples CSV parse strictly, name the line and
 // the field of every mistake, and round-trip through their writers.
 #include "common/error.hpp"
-#include "stimuli/sensor_io.hpp"
+#include "stimuli/verbs/sensor_io.hpp"
 
 #include <gtest/gtest.h>
 

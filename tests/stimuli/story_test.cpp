@@ -1,9 +1,9 @@
 // Gloss sentences and story files (SPEC §4.1, docs/stories.md): what a sentence means, and
 // every kind of mistake reported at its file, line and column.
-#include "stimuli/gloss.hpp"
-#include "stimuli/lexicon.hpp"
-#include "stimuli/story.hpp"
-#include "stimuli/verbs.hpp"
+#include "stimuli/story/gloss.hpp"
+#include "stimuli/story/lexicon.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/verbs/verbs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -252,8 +252,8 @@ TEST(DefaultStories, TwelveStoriesUseEveryVerbInAtLeastThreeWithFourQuestionsEac
 }  // namespace
 }  // namespace signstim::stimuli
 
-#include "stimuli/timeline.hpp"
-#include "stimuli/verb_models.hpp"
+#include "stimuli/story/timeline.hpp"
+#include "stimuli/verbs/verb_models.hpp"
 
 namespace signstim::stimuli {
 namespace {

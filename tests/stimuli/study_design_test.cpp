@@ -1,6 +1,6 @@
 // The study design's properties (SPEC §4.4), each checked for the default 12 x 4 design and
 // for other designs that divide.
-#include "stimuli/study_design.hpp"
+#include "stimuli/study/study_design.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-// The jsPsych experiment's files (stimuli/study_experiment.hpp) read as text: every participant's
+// The jsPsych experiment's files (stimuli/study/study_experiment.hpp) read as text: every participant's
 // script holds their timeline-variables JSON verbatim, the page loads jsPsych, its plugins and the
 // session from relative paths in the right order, nothing needs fetch() or modules (refused from
 // file://), the session writes the documented results header, and the same listing gives the
 // same bytes. The session itself runs in Chromium in tests/browser/run_experiment.py.
-#include "stimuli/study_experiment.hpp"
-#include "stimuli/study_exports.hpp"
+#include "stimuli/study/study_experiment.hpp"
+#include "stimuli/study/study_exports.hpp"
 #include "tests/stimuli/review_page_fixture.hpp"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
-// The study's exports (stimuli/study_exports.hpp): the conditions CSV, the jsPsych JSON and
+// The study's exports (stimuli/study/study_exports.hpp): the conditions CSV, the jsPsych JSON and
 // the overview CSV read back as what they claim to be and carry the schedule of the listing;
 // the printable sheets escape their text and the response sheet never shows the mapping.
 // The listing is a small synthetic fixture built here by hand, not a rendered study.
-#include "stimuli/study_exports.hpp"
+#include "stimuli/study/study_exports.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -1,9 +1,9 @@
-// The study file and the plan drawn from it (stimuli/study.hpp): names as SPEC §5, every
+// The study file and the plan drawn from it (stimuli/study/study.hpp): names as SPEC §5, every
 // participant's schedule in the listing, the design hash, and the listing's JSON round trip
 // (what `study merge` and `verify` read back).
 #include "stimuli/json_source.hpp"
-#include "stimuli/story.hpp"
-#include "stimuli/study.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/study/study.hpp"
 
 #include <gtest/gtest.h>
 

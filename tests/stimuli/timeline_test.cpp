@@ -1,10 +1,10 @@
-// Timelines (stimuli/timeline.hpp): a story in each of the four versions differs only inside
+// Timelines (stimuli/story/timeline.hpp): a story in each of the four versions differs only inside
 // the verb slots; the hands start and end at rest and move without jumps; fingerspelled
 // letters are held; gaze follows pointing and the verb's object.
-#include "stimuli/timeline.hpp"
+#include "stimuli/story/timeline.hpp"
 
-#include "stimuli/signing_space.hpp"
-#include "stimuli/sora.hpp"
+#include "stimuli/verbs/signing_space.hpp"
+#include "stimuli/verbs/sora.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,10 +4,10 @@
 // stimulus version at the paper's phase-2 arrangement and its mirror.
 #include "hand/contact.hpp"
 #include "hand/hand_model.hpp"
-#include "stimuli/handshapes.hpp"
-#include "stimuli/verb_models.hpp"
-#include "stimuli/verb_synthesis.hpp"
-#include "stimuli/verbs.hpp"
+#include "stimuli/story/handshapes.hpp"
+#include "stimuli/verbs/verb_models.hpp"
+#include "stimuli/verbs/verb_synthesis.hpp"
+#include "stimuli/verbs/verbs.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Signing space, SORA conversions and polynomial least squares (SPEC §3.1, §3.4, §3.6).
 #include "common/error.hpp"
-#include "stimuli/gmm.hpp"
-#include "stimuli/polynomial.hpp"
-#include "stimuli/signing_space.hpp"
-#include "stimuli/sora.hpp"
+#include "stimuli/verbs/gmm.hpp"
+#include "stimuli/verbs/polynomial.hpp"
+#include "stimuli/verbs/signing_space.hpp"
+#include "stimuli/verbs/sora.hpp"
 
 #include <gtest/gtest.h>
 

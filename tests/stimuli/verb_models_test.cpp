@@ -2,14 +2,14 @@
 // (SPEC §3.2–§3.8).
 #include "common/error.hpp"
 #include "hand/hand_model.hpp"
-#include "stimuli/corpus.hpp"
-#include "stimuli/handshapes.hpp"
-#include "stimuli/reference_performer.hpp"
-#include "stimuli/signing_space.hpp"
-#include "stimuli/sora.hpp"
-#include "stimuli/verb_models.hpp"
-#include "stimuli/verb_synthesis.hpp"
-#include "stimuli/verbs.hpp"
+#include "stimuli/verbs/corpus.hpp"
+#include "stimuli/story/handshapes.hpp"
+#include "stimuli/verbs/reference_performer.hpp"
+#include "stimuli/verbs/signing_space.hpp"
+#include "stimuli/verbs/sora.hpp"
+#include "stimuli/verbs/verb_models.hpp"
+#include "stimuli/verbs/verb_synthesis.hpp"
+#include "stimuli/verbs/verbs.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,66 @@
+#pragma once
+// Gloss: the written form of an ASL sentence in a story file (SPEC §4.1, docs/stories.md):
+//
+//   JOHN IX(0.9) ASK MARY IX(-0.6)
+//
+// One sentence is a sequence of items separated by spaces:
+//   sign             STUDENT, HOMEWORK, YESTERDAY   a sign of the lexicon
+//   name             JOHN                            a character of the story (fingerspelled
+//                                                    or its name sign)
+//   pointing         IX(0.9)  IX(JOHN)               the index points at an arc position or
+//                                                    at a character's position
+//   fingerspelling   fs-JOHN  fs-PIZZA               letter by letter
+//   verb             ASK  ASK(JOHN,MARY)  TELL(MARY)  an indicating verb; its subject and
+//                                                    object come from the sentence, or are
+//                                                    given in parentheses (SPEC §3.2)
+//   hold             HOLD  HOLD(0.5)                 the hands hold still (seconds)
+//
+// This file only tokenizes and parses one sentence into items with their columns; what the
+// names mean (lexicon, characters, verbs) is checked by the story loader (stimuli/story/story.hpp).
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace signstim::stimuli {
+
+// An argument of IX(...) or of a verb: an arc position or a character's gloss name.
+struct GlossArgument {
+    std::optional<double> position;  // IX(0.9)
+    std::string name;                // IX(JOHN)
+    int column = 0;                  // 1-based column of the argument within the sentence
+};
+
+enum class GlossItemKind { Word, Pointing, Fingerspelling, Hold };
+
+// One item as written. A Word is a sign, a character's name or a verb: which one is decided
+// against the story's characters, the verb library and the lexicon.
+struct GlossItem {
+    GlossItemKind kind = GlossItemKind::Word;
+    std::string text;                     // as written: "ASK(JOHN,MARY)", "IX(0.9)"
+    std::string word;                     // Word: "ASK"; Fingerspelling: the letters "JOHN"
+    std::vector<GlossArgument> arguments; // Word with "(...)", Pointing: exactly one
+    bool hasArgumentList = false;         // "ASK()" is an error, "ASK" is not
+    std::optional<double> holdSeconds;    // Hold with an explicit duration
+    int column = 0;                       // 1-based column of the item's first character
+};
+
+// A parse error at a column of the sentence (1-based), with what to change.
+struct GlossError {
+    int column = 0;
+    std::string message;
+};
+
+// Parses one sentence. Returns the items, or the first error.
+struct GlossParse {
+    std::vector<GlossItem> items;
+    std::optional<GlossError> error;
+};
+GlossParse parseGloss(std::string_view sentence);
+
+// The names of `candidates` closest to `name` by edit distance (at most `count`, each within
+// a distance of about a third of the name's length), for "did you mean" messages.
+std::vector<std::string> closestNames(std::string_view name, const std::vector<std::string>& candidates,
+                                      std::size_t count = 3);
+
+}  // namespace signstim::stimuli

@@ -1,0 +1,96 @@
+#pragma once
+// Stories (SPEC §4.1, docs/stories.md): a title, 2-6 characters placed on the signing arc,
+// sentences in gloss (stimuli/story/gloss.hpp), multiple-choice comprehension questions with their
+// answer keys, and notes for the experimenter — read from a JSON file and validated against
+// the story's own characters, the verb library and the lexicon's sign names. Every problem
+// is an InputError naming the file, the line, the column (inside a sentence) and the field.
+//
+// The verb's subject and object (SPEC §3.2) come from the sentence by one rule, written down
+// in docs/stories.md: the subject is the nearest character named or pointed to before the
+// verb, the object the first one named or pointed to after it; ASK(JOHN,MARY) or TELL(MARY)
+// says so explicitly where the rule cannot read the sentence.
+#include "stimuli/json_source.hpp"
+#include "stimuli/verbs/verbs.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace signstim::stimuli {
+
+struct StoryCharacter {
+    std::string gloss;       // "JOHN": how the sentences name the character
+    double position = 0.0;   // arc position, SPEC §3.1
+    // A lexicon sign used as the name; empty: fingerspelled. A character whose gloss is a
+    // sign (TEACHER, COACH) is signed with it, and within the story that gloss means the
+    // character.
+    std::string nameSign;
+    std::string spelled;     // the letters fingerspelled (default: the gloss)
+    std::string description; // "a student", for the experimenter
+    int line = 0;
+};
+
+enum class StoryItemKind { Sign, Name, Pointing, Fingerspelling, Verb, Hold };
+
+// One item of a sentence with what it means in this story.
+struct StoryItem {
+    StoryItemKind kind = StoryItemKind::Sign;
+    std::string gloss;                 // Sign: the lexicon gloss; Verb: the verb; Name: the character's gloss
+    std::string letters;               // Fingerspelling, and a Name that is fingerspelled
+    int character = -1;                // Name, Pointing (when at a character): index into characters
+    double position = 0.0;             // Pointing: the arc position pointed at
+    int subject = -1, object = -1;     // Verb: character indices (subject -1 for object-only verbs)
+    std::optional<double> holdSeconds; // Hold: explicit duration, else the timing default
+    bool placesCharacter = false;      // Pointing right after a Name: introduces the character there
+    int line = 0, column = 0;          // where it is written
+};
+
+struct StorySentence {
+    std::string gloss;  // as written
+    std::vector<StoryItem> items;
+    int line = 0;
+};
+
+struct StoryQuestion {
+    std::string text;
+    std::vector<std::string> choices;  // 3-4
+    int answer = 0;                    // index into choices (written as a letter, "A".."D")
+    int probeSentence = 0;             // 0-based index of the sentence it asks about
+    std::string probeVerb;             // the verb it asks about ("ASK")
+    int line = 0;
+};
+
+struct Story {
+    std::string file;
+    std::string title;
+    std::vector<StoryCharacter> characters;
+    std::vector<StorySentence> sentences;
+    std::vector<StoryQuestion> questions;
+    std::string notes;
+
+    int characterIndex(std::string_view gloss) const;  // -1 when none
+};
+
+// What a story may say: the verbs, the lexicon's signs, and the letters that can be
+// fingerspelled (those with a handshape, and J and Z with their path).
+struct StoryVocabulary {
+    const VerbLibrary* verbs = nullptr;
+    std::vector<std::string> signs;                // lexicon glosses, also for "closest known" hints
+    std::function<bool(std::string_view)> isSign;  // nullptr: membership of `signs`
+    std::function<bool(char)> canFingerspell;      // nullptr: every letter A-Z
+};
+
+// Characters closer than this on the arc cannot be told apart by pointing [D].
+inline constexpr double kMinimumCharacterSeparation = 0.2;
+// Story file format: {"format": "signstim-story", "version": 1, ...}.
+inline constexpr int kStoryFormatVersion = 1;
+
+Story parseStory(const JsonSource& source, const StoryVocabulary& vocabulary);
+Story loadStory(const std::filesystem::path& file, const StoryVocabulary& vocabulary);
+
+// "A".."D" for 0..3.
+std::string choiceLetter(int index);
+
+}  // namespace signstim::stimuli

@@ -1,0 +1,540 @@
+#include "stimuli/study/review_page.hpp"
+
+#include <charconv>
+#include <set>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace signstim::stimuli {
+
+std::string encodeUrlPath(std::string_view path) {
+    static constexpr char hex[] = "0123456789ABCDEF";
+    std::string out;
+    out.reserve(path.size());
+    for (const char c : path) {
+        const auto byte = static_cast<unsigned char>(c);
+        const bool unreserved = (byte >= 'A' && byte <= 'Z') || (byte >= 'a' && byte <= 'z') ||
+                                (byte >= '0' && byte <= '9') || byte == '-' || byte == '_' || byte == '.' ||
+                                byte == '~' || byte == '/';
+        if (unreserved) {
+            out += c;
+        } else {
+            out += '%';
+            out += hex[byte >> 4];
+            out += hex[byte & 0x0F];
+        }
+    }
+    return out;
+}
+
+namespace {
+
+// The page's stylesheet: system fonts, quiet greys, one accent; printable (print opens every
+// section through the script below and drops the navigation).
+constexpr std::string_view styleSheet = R"css(
+:root { --ink: #1f2328; --muted: #5b6470; --line: #d9dee4; --soft: #f5f7f9; --accent: #0b5cad; --ok: #1a7f37; }
+* { box-sizing: border-box; }
+html { font-family: system-ui, -apple-system, "Segoe UI", Roboto, "Noto Sans", "Helvetica Neue", Arial, sans-serif;
+  font-size: 15px; line-height: 1.5; color: var(--ink); background: #fff; }
+body { margin: 0 auto; max-width: 1240px; padding: 2rem 2rem 4rem; }
+h1 { font-size: 1.75rem; font-weight: 600; margin: 0 0 .25rem; }
+h2 { font-size: 1.3rem; font-weight: 600; margin: 3rem 0 1rem; padding-bottom: .35rem; border-bottom: 1px solid var(--line); }
+h3 { font-size: 1.1rem; font-weight: 600; margin: 1.75rem 0 .5rem; }
+h4 { font-size: .95rem; font-weight: 600; margin: 1.25rem 0 .5rem; color: var(--muted); }
+p { margin: .4rem 0; }
+a { color: var(--accent); text-decoration: none; }
+a:hover { text-decoration: underline; }
+code, .gloss { font-family: ui-monospace, "SFMono-Regular", "DejaVu Sans Mono", Menlo, Consolas, monospace; font-size: .9em; }
+.muted, .note { color: var(--muted); }
+.note { max-width: 75ch; }
+.lede { color: var(--muted); max-width: 75ch; margin-bottom: 1.25rem; }
+dl.facts { display: grid; grid-template-columns: max-content 1fr; gap: .25rem 1.5rem; margin: 0; }
+dl.facts dt { color: var(--muted); }
+dl.facts dd { margin: 0; overflow-wrap: anywhere; }
+nav.toc { margin-top: 2rem; padding: 1rem 1.25rem; background: var(--soft); border: 1px solid var(--line); border-radius: 6px; }
+nav.toc h2 { margin: 0 0 .5rem; padding: 0; border: 0; font-size: 1.05rem; }
+nav.toc > ol { margin: 0; padding-left: 1.25rem; }
+nav.toc > ol > li { margin: .35rem 0; }
+ul.links { list-style: none; margin: .25rem 0 0; padding: 0; display: flex; flex-wrap: wrap; gap: .15rem .9rem; }
+ul.links.wide { display: block; columns: 2 22rem; }
+table { border-collapse: collapse; width: 100%; }
+th, td { text-align: left; vertical-align: top; padding: .65rem .75rem; border-bottom: 1px solid var(--line); }
+thead th { font-size: .8rem; font-weight: 600; color: var(--muted); background: var(--soft); text-transform: uppercase; letter-spacing: .03em; }
+td.num { width: 2.5rem; text-align: right; color: var(--muted); font-variant-numeric: tabular-nums; }
+figure { margin: 0; }
+figcaption { font-size: .8rem; color: var(--muted); margin-top: .3rem; font-variant-numeric: tabular-nums; }
+video { display: block; width: 320px; max-width: 100%; height: auto; background: #111; border-radius: 4px; }
+video.quad { width: 480px; }
+.badge { display: inline-block; min-width: 1.7em; padding: 0 .4em; border-radius: 3px; font-size: .8em; font-weight: 600;
+  text-align: center; color: #fff; background: var(--version, #5b6470); }
+.v0 { --version: #2f6690; } .v1 { --version: #7a4f96; } .v2 { --version: #2e7d4f; } .v3 { --version: #9a5b16; } .v4 { --version: #8d3b4a; }
+.version-name { margin-left: .35em; }
+ol.questions { margin: 0; padding-left: 1.4rem; display: grid; grid-template-columns: repeat(auto-fill, minmax(16rem, 1fr));
+  gap: .9rem 2.25rem; }
+ol.questions p { margin: 0; }
+table.trials td.story { width: 11rem; }
+table.trials td.story .version { margin-top: .4rem; white-space: nowrap; }
+table.trials td.clip { width: calc(272px + 1.5rem); }
+table.trials td.clip.quad { width: calc(400px + 1.5rem); }
+table.trials video { width: 272px; max-width: none; }
+table.trials video.quad { width: 400px; }
+ol.choices { margin: .15rem 0 0; padding-left: 1.6rem; }
+ol.choices li.answer { font-weight: 600; }
+.key { margin-left: .5em; padding: 0 .35em; border: 1px solid var(--ok); border-radius: 3px; color: var(--ok);
+  font-size: .72rem; font-weight: 600; white-space: nowrap; }
+.probe { font-size: .8rem; color: var(--muted); }
+.toolbar { margin: .5rem 0 1rem; display: flex; gap: .5rem; }
+.toolbar button { font: inherit; font-size: .85rem; padding: .25rem .75rem; color: var(--ink); background: #fff;
+  border: 1px solid var(--line); border-radius: 4px; cursor: pointer; }
+.toolbar button:hover { background: var(--soft); }
+details.participant { border: 1px solid var(--line); border-radius: 6px; margin: .5rem 0; }
+details.participant > summary { cursor: pointer; padding: .55rem 1rem; background: var(--soft); border-radius: 6px; }
+details.participant[open] > summary { border-bottom: 1px solid var(--line); border-radius: 6px 6px 0 0; }
+details.participant > summary .pid { font-weight: 600; margin-right: .75rem; }
+details.participant > .body { padding: .25rem 1.25rem 1.25rem; overflow-x: auto; }
+.strip { display: flex; flex-wrap: wrap; gap: .6rem; margin: .75rem 0 .5rem; padding: 0; list-style: none; }
+.strip li { width: 112px; font-size: .75rem; color: var(--muted); line-height: 1.3; }
+.strip img { display: block; width: 112px; height: auto; margin-bottom: .2rem; border-radius: 3px; background: var(--soft); }
+section.story, section.sentence { margin-top: 2rem; padding-top: .25rem; border-top: 1px solid var(--line); }
+section.story h3, section.sentence h3 { margin-top: .75rem; }
+.versions { display: grid; grid-template-columns: repeat(auto-fill, minmax(270px, 1fr)); gap: 1rem 1.25rem; }
+.versions video { width: 100%; }
+.versions figcaption { font-size: .85rem; color: var(--ink); }
+ol.sentences { margin: 0; padding-left: 1.6rem; }
+ol.sentences li { margin: .1rem 0; }
+.sentence-body { display: flex; flex-wrap: wrap; gap: 1.25rem 2rem; align-items: flex-start; }
+table.mapping { width: auto; }
+table.mapping th, table.mapping td { padding: .2rem .9rem .2rem 0; border: 0; background: none; }
+footer { margin-top: 4rem; padding-top: 1rem; border-top: 1px solid var(--line); font-size: .85rem; color: var(--muted); }
+@media print {
+  html { font-size: 10.5pt; }
+  body { max-width: none; padding: 0; }
+  nav.toc, .toolbar { display: none; }
+  a { color: inherit; }
+  details.participant { border: 0; }
+  details.participant > summary { background: none; padding: 0; font-size: 1.1rem; list-style: none; }
+  details.participant > summary::-webkit-details-marker { display: none; }
+  details.participant > .body { padding: 0; }
+  details.participant { break-before: page; }
+  tr, figure, section.sentence { break-inside: avoid; }
+  video, table.trials video { width: 200px; }
+  video.quad, table.trials video.quad { width: 300px; }
+  table.trials td.clip, table.trials td.clip.quad { width: auto; }
+  video::-webkit-media-controls { display: none !important; }
+}
+)css";
+
+// Open every collapsed section while printing (and close them again); pause a section's videos
+// when it is closed; let one video play at a time; expand or collapse all participants.
+constexpr std::string_view script = R"js(
+(function () {
+  'use strict';
+  var openedForPrint = [];
+  window.addEventListener('beforeprint', function () {
+    document.querySelectorAll('details:not([open])').forEach(function (d) { d.open = true; openedForPrint.push(d); });
+  });
+  window.addEventListener('afterprint', function () {
+    openedForPrint.forEach(function (d) { d.open = false; });
+    openedForPrint = [];
+  });
+  document.addEventListener('toggle', function (event) {
+    var d = event.target;
+    if (d.tagName === 'DETAILS' && !d.open) d.querySelectorAll('video').forEach(function (v) { v.pause(); });
+  }, true);
+  document.addEventListener('play', function (event) {
+    document.querySelectorAll('video').forEach(function (v) { if (v !== event.target) v.pause(); });
+  }, true);
+  document.querySelectorAll('[data-participants]').forEach(function (button) {
+    button.addEventListener('click', function () {
+      var open = button.getAttribute('data-participants') === 'open';
+      document.querySelectorAll('details.participant').forEach(function (d) { d.open = open; });
+    });
+  });
+  // A link to a trial or participant inside a collapsed section opens it.
+  function openTarget() {
+    var id = decodeURIComponent(location.hash.slice(1));
+    var target = id && document.getElementById(id);
+    for (var node = target; node; node = node.parentElement) if (node.tagName === 'DETAILS') node.open = true;
+    if (target) target.scrollIntoView();
+  }
+  window.addEventListener('hashchange', openTarget);
+  openTarget();
+})();
+)js";
+
+std::string seconds3(double seconds) {
+    char buffer[64];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, seconds, std::chars_format::fixed, 3);
+    if (result.ec != std::errc()) return "0.000";
+    return std::string(buffer, result.ptr);
+}
+
+// Width and height from the listing's "1280x720", to reserve each picture's shape before it
+// loads; {0, 0} when the text is not of that form.
+std::pair<unsigned, unsigned> parseSize(std::string_view size) {
+    const auto cross = size.find('x');
+    if (cross == std::string_view::npos) return {0, 0};
+    unsigned width = 0, height = 0;
+    const std::string_view w = size.substr(0, cross), h = size.substr(cross + 1);
+    const auto rw = std::from_chars(w.data(), w.data() + w.size(), width);
+    const auto rh = std::from_chars(h.data(), h.data() + h.size(), height);
+    if (rw.ec != std::errc() || rw.ptr != w.data() + w.size() || rh.ec != std::errc() ||
+        rh.ptr != h.data() + h.size() || width == 0 || height == 0)
+        return {0, 0};
+    return {width, height};
+}
+
+// Element ids: readable ("story-03", "participant-P01", "P01-trial-1") and unique; characters
+// outside [A-Za-z0-9_-] become '-', and a clash gets the element's position appended.
+class Anchors {
+public:
+    std::string make(std::string_view readable, std::size_t position) {
+        std::string id;
+        for (const char c : readable) {
+            const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' ||
+                               c == '_';
+            id += plain ? c : '-';
+        }
+        if (id.empty()) id = "item";
+        if (!used_.insert(id).second) {
+            id += "-" + std::to_string(position + 1);
+            while (!used_.insert(id).second) id += "-";
+        }
+        return id;
+    }
+
+private:
+    std::set<std::string> used_;
+};
+
+class PageWriter {
+public:
+    explicit PageWriter(const StudyListing& listing) : listing_(listing), frame_(parseSize(listing.size)) {
+        validate();
+        for (std::size_t s = 0; s < listing.stories.size(); ++s)
+            storyAnchor_.push_back(anchors_.make(listing.stories[s].id, s));
+        for (std::size_t s = 0; s < listing.sentences.size(); ++s)
+            sentenceAnchor_.push_back(anchors_.make(listing.sentences[s].id, s));
+        for (std::size_t p = 0; p < listing.participants.size(); ++p)
+            participantAnchor_.push_back(anchors_.make("participant-" + listing.participants[p].id, p));
+    }
+
+    std::string write() {
+        out_ += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+        out_ += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+        out_ += "<meta name=\"generator\" content=\"signstim " + escapeHtml(listing_.toolVersion) + "\">\n";
+        out_ += "<title>" + escapeHtml(listing_.title) + " \u2014 review</title>\n";
+        out_ += "<style>";
+        out_ += styleSheet;
+        out_ += "</style>\n</head>\n<body>\n";
+        header();
+        contents();
+        out_ += "<main>\n";
+        participants();
+        stories();
+        sentences();
+        out_ += "</main>\n";
+        out_ += "<footer>Written by signstim " + escapeHtml(listing_.toolVersion) + " from <code>" +
+                escapeHtml(listing_.studyFile) +
+                "</code>. A static page: it needs no server or network, and its links are relative to the "
+                "study's output folder, so it works wherever the folder is moved.</footer>\n";
+        out_ += "<script>";
+        out_ += script;
+        out_ += "</script>\n</body>\n</html>\n";
+        return std::move(out_);
+    }
+
+private:
+    void validate() const {
+        const std::size_t versions = listing_.versions.size();
+        if (listing_.versionLetters.size() != versions)
+            throw std::invalid_argument("study listing: " + std::to_string(versions) + " versions but " +
+                                        std::to_string(listing_.versionLetters.size()) + " version letters");
+        for (const ListedStory& story : listing_.stories)
+            if (story.clips.size() != versions)
+                throw std::invalid_argument("study listing: " + story.id + " has " + std::to_string(story.clips.size()) +
+                                            " clips for " + std::to_string(versions) + " versions");
+        for (const ListedSentence& sentence : listing_.sentences)
+            for (const std::size_t v : sentence.panelVersion)
+                if (v >= versions)
+                    throw std::invalid_argument("study listing: " + sentence.id + " shows version " + std::to_string(v) +
+                                                " of " + std::to_string(versions));
+        for (const ListedParticipant& participant : listing_.participants) {
+            for (const ListedPhase1Trial& trial : participant.phase1)
+                if (trial.story >= listing_.stories.size() || trial.version >= versions)
+                    throw std::invalid_argument("study listing: " + participant.id + " phase-1 trial " +
+                                                std::to_string(trial.trial) + " names story " +
+                                                std::to_string(trial.story) + ", version " +
+                                                std::to_string(trial.version) + " that the listing does not hold");
+            for (const ListedPhase2Trial& trial : participant.phase2)
+                if (trial.sentence >= listing_.sentences.size())
+                    throw std::invalid_argument("study listing: " + participant.id + " phase-2 trial " +
+                                                std::to_string(trial.trial) + " names sentence " +
+                                                std::to_string(trial.sentence) + " that the listing does not hold");
+        }
+    }
+
+    std::string versionName(std::size_t version) const { return listing_.versions[version]; }
+
+    // "<span class="badge v1">V</span><span class="version-name">vector</span>"
+    std::string versionBadge(std::size_t version, bool withName = true) const {
+        std::string html = "<span class=\"badge v" + std::to_string(version % 5) + "\" title=\"" +
+                           escapeHtml(listing_.versions[version]) + "\">" +
+                           escapeHtml(listing_.versionLetters[version]) + "</span>";
+        if (withName) html += "<span class=\"version-name\">" + escapeHtml(listing_.versions[version]) + "</span>";
+        return html;
+    }
+
+    std::string sizeAttributes() const {
+        if (frame_.first == 0) return {};
+        return " width=\"" + std::to_string(frame_.first) + "\" height=\"" + std::to_string(frame_.second) + "\"";
+    }
+
+    // <video> with its poster, expected duration and frame count, and a caption of the duration
+    // and the file links; `quad` for the 2x2 phase-2 clips (their own size, drawn larger).
+    void video(const ListedClip& clip, std::string_view preload, std::string_view label, bool quad = false) {
+        out_ += "<figure>";
+        if (clip.video.empty()) {
+            out_ += "<p class=\"muted\">no clip</p></figure>";
+            return;
+        }
+        out_ += "<video controls playsinline preload=\"" + std::string(preload) + "\"";
+        if (quad) out_ += " class=\"quad\"";
+        else out_ += sizeAttributes();
+        if (!clip.poster.empty()) out_ += " poster=\"" + escapeHtml(encodeUrlPath(clip.poster)) + "\"";
+        out_ += " src=\"" + escapeHtml(encodeUrlPath(clip.video)) + "\"";
+        out_ += " data-expected-duration=\"" + seconds3(clip.durationSeconds) + "\"";
+        out_ += " data-frames=\"" + std::to_string(clip.frameCount) + "\"";
+        out_ += " aria-label=\"" + escapeHtml(label) + "\"></video>\n<figcaption>";
+        out_ += seconds3(clip.durationSeconds) + " s \u00b7 " + std::to_string(clip.frameCount) + " frames \u00b7 <a href=\"" +
+                escapeHtml(encodeUrlPath(clip.video)) + "\">MP4</a>";
+        if (!clip.poster.empty()) out_ += " \u00b7 <a href=\"" + escapeHtml(encodeUrlPath(clip.poster)) + "\">poster</a>";
+        if (!clip.frames.empty()) out_ += " \u00b7 <a href=\"" + escapeHtml(encodeUrlPath(clip.frames)) + "/\">frames</a>";
+        out_ += "</figcaption></figure>";
+    }
+
+    void questions(const ListedStory& story) {
+        if (story.questions.empty()) {
+            out_ += "<p class=\"muted\">no questions</p>";
+            return;
+        }
+        out_ += "<ol class=\"questions\">\n";
+        for (const ListedQuestion& question : story.questions) {
+            out_ += "<li><p>" + escapeHtml(question.text) + "</p><ol class=\"choices\" type=\"A\">";
+            for (std::size_t c = 0; c < question.choices.size(); ++c) {
+                const bool answer = static_cast<int>(c) == question.answer;
+                out_ += answer ? "<li class=\"answer\">" : "<li>";
+                out_ += escapeHtml(question.choices[c]);
+                if (answer) out_ += "<span class=\"key\">\u2713 answer</span>";
+                out_ += "</li>";
+            }
+            out_ += "</ol>";
+            if (!question.probeVerb.empty())
+                out_ += "<p class=\"probe\">asks about <span class=\"gloss\">" + escapeHtml(question.probeVerb) +
+                        "</span> in sentence " + std::to_string(question.probeSentence + 1) + "</p>";
+            out_ += "</li>\n";
+        }
+        out_ += "</ol>";
+    }
+
+    // "A = vector" for each panel, as a small table.
+    void mapping(const ListedSentence& sentence) {
+        out_ += "<table class=\"mapping\"><thead><tr><th>Panel</th><th>Version</th></tr></thead><tbody>";
+        static constexpr std::string_view corners[] = {"top left", "top right", "bottom left", "bottom right"};
+        for (std::size_t k = 0; k < sentence.panelVersion.size(); ++k) {
+            const std::string label = k < 26 ? std::string(1, static_cast<char>('A' + k)) : std::to_string(k + 1);
+            out_ += "<tr><td><strong>" + label + "</strong>";
+            if (sentence.panelVersion.size() == 4) out_ += " <span class=\"muted\">" + std::string(corners[k]) + "</span>";
+            out_ += "</td><td>" + versionBadge(sentence.panelVersion[k]) + "</td></tr>";
+        }
+        out_ += "</tbody></table>";
+    }
+
+    void header() {
+        const StudyListing& l = listing_;
+        std::size_t videos = 0;
+        for (const ListedStory& story : l.stories) videos += story.clips.size();
+        videos += l.sentences.size();
+        out_ += "<header>\n<h1>" + escapeHtml(l.title) + "</h1>\n";
+        out_ += "<p class=\"lede\">Review page of the rendered study, for the experimenter: each participant's trials "
+                "in order, each story in its versions side by side, and each phase-2 sentence with its panel "
+                "mapping. It names the version of every clip, which participants must not see.</p>\n";
+        out_ += "<dl class=\"facts\">\n";
+        out_ += "<dt>Study file</dt><dd><code>" + escapeHtml(l.studyFile) + "</code></dd>\n";
+        out_ += "<dt>Tool</dt><dd>signstim " + escapeHtml(l.toolVersion) + "</dd>\n";
+        out_ += "<dt>Seed</dt><dd><code>" + std::to_string(l.seed) + "</code></dd>\n";
+        out_ += "<dt>Design hash</dt><dd><code>" + escapeHtml(l.designHash) + "</code></dd>\n";
+        out_ += "<dt>Render settings</dt><dd>" + escapeHtml(l.size) + ", " + escapeHtml(l.fps) + " fps, MSAA " +
+                std::to_string(l.msaa) + "\u00d7</dd>\n";
+        out_ += "<dt>Versions</dt><dd>";
+        for (std::size_t v = 0; v < l.versions.size(); ++v) {
+            if (v > 0) out_ += " &nbsp; ";
+            out_ += versionBadge(v);
+        }
+        out_ += "</dd>\n";
+        out_ += "<dt>Design</dt><dd>" + std::to_string(l.participants.size()) + " participants; phase 1: " +
+                std::to_string(l.stories.size()) + " stories \u00d7 " + std::to_string(l.versions.size()) +
+                " versions; phase 2: " + std::to_string(l.sentences.size()) + " side-by-side sentences rated " +
+                std::to_string(l.likertMinimum) + " to " + std::to_string(l.likertMaximum) + "; " +
+                std::to_string(videos) + " clips</dd>\n";
+        out_ += "</dl>\n</header>\n";
+    }
+
+    void contents() {
+        out_ += "<nav class=\"toc\" aria-label=\"Contents\">\n<h2>Contents</h2>\n<ol>\n";
+        out_ += "<li><a href=\"#participants\">Participants</a> <span class=\"muted\">(" +
+                std::to_string(listing_.participants.size()) + ")</span><ul class=\"links\">";
+        for (std::size_t p = 0; p < listing_.participants.size(); ++p)
+            out_ += "<li><a href=\"#" + participantAnchor_[p] + "\">" + escapeHtml(listing_.participants[p].id) +
+                    "</a></li>";
+        out_ += "</ul></li>\n";
+        out_ += "<li><a href=\"#stories\">Stories</a> <span class=\"muted\">(" + std::to_string(listing_.stories.size()) +
+                ")</span><ul class=\"links wide\">";
+        for (std::size_t s = 0; s < listing_.stories.size(); ++s)
+            out_ += "<li><a href=\"#" + storyAnchor_[s] + "\">" + escapeHtml(listing_.stories[s].id) + "</a> " +
+                    escapeHtml(listing_.stories[s].title) + "</li>";
+        out_ += "</ul></li>\n";
+        out_ += "<li><a href=\"#sentences\">Phase 2 sentences</a> <span class=\"muted\">(" +
+                std::to_string(listing_.sentences.size()) + ")</span><ul class=\"links wide\">";
+        for (std::size_t s = 0; s < listing_.sentences.size(); ++s)
+            out_ += "<li><a href=\"#" + sentenceAnchor_[s] + "\">" + escapeHtml(listing_.sentences[s].id) +
+                    "</a> <span class=\"gloss\">" + escapeHtml(listing_.sentences[s].gloss) + "</span></li>";
+        out_ += "</ul></li>\n</ol>\n</nav>\n";
+    }
+
+    void participants() {
+        out_ += "<section id=\"participants\">\n<h2>Participants</h2>\n";
+        out_ += "<p class=\"note\">Each participant's set in presentation order. Open a participant to see their "
+                "trials; a clip loads when it is played.</p>\n";
+        out_ += "<div class=\"toolbar\"><button type=\"button\" data-participants=\"open\">Open all</button>"
+                "<button type=\"button\" data-participants=\"close\">Close all</button></div>\n";
+        for (std::size_t p = 0; p < listing_.participants.size(); ++p) participant(p);
+        out_ += "</section>\n";
+    }
+
+    void participant(std::size_t index) {
+        const ListedParticipant& participant = listing_.participants[index];
+        const std::string& anchor = participantAnchor_[index];
+        out_ += "<details class=\"participant\" id=\"" + anchor + "\">\n<summary><span class=\"pid\">" +
+                escapeHtml(participant.id) + "</span><span class=\"muted\">group " +
+                std::to_string(participant.group + 1) + " \u00b7 " + std::to_string(participant.phase1.size()) +
+                " phase-1 trials \u00b7 " + std::to_string(participant.phase2.size()) +
+                " phase-2 trials</span></summary>\n<div class=\"body\">\n";
+
+        out_ += "<h3>Phase 1 \u2014 comprehension</h3>\n";
+        if (participant.phase1.empty()) {
+            out_ += "<p class=\"muted\">no phase-1 trials</p>\n";
+        } else {
+            // The order at a glance: a poster per trial, linked to its row.
+            out_ += "<ol class=\"strip\" aria-label=\"Phase 1 order\">";
+            for (const ListedPhase1Trial& trial : participant.phase1) {
+                const ListedStory& story = listing_.stories[trial.story];
+                const ListedClip& clip = story.clips[trial.version];
+                out_ += "<li><a href=\"#" + anchor + "-trial-" + std::to_string(trial.trial) + "\">";
+                if (!clip.poster.empty())
+                    out_ += "<img loading=\"lazy\" src=\"" + escapeHtml(encodeUrlPath(clip.poster)) + "\"" +
+                            sizeAttributes() + " alt=\"" + escapeHtml(story.id + ", " + versionName(trial.version)) +
+                            "\">";
+                out_ += std::to_string(trial.trial) + ". " + escapeHtml(story.id) + "</a> " +
+                        versionBadge(trial.version, false) + "</li>";
+            }
+            out_ += "</ol>\n";
+            out_ += "<table class=\"trials\">\n<thead><tr><th>#</th><th>Story, version</th><th>Clip</th>"
+                    "<th>Questions (answer key marked)</th></tr></thead>\n<tbody>\n";
+            for (const ListedPhase1Trial& trial : participant.phase1) {
+                const ListedStory& story = listing_.stories[trial.story];
+                out_ += "<tr id=\"" + anchor + "-trial-" + std::to_string(trial.trial) + "\"><td class=\"num\">" +
+                        std::to_string(trial.trial) + "</td><td class=\"story\"><a href=\"#" + storyAnchor_[trial.story] + "\">" +
+                        escapeHtml(story.id) + "</a><br>" + escapeHtml(story.title) + "<div class=\"version\">" +
+                        versionBadge(trial.version) + "</div></td><td class=\"clip\">";
+                video(story.clips[trial.version], "none",
+                      participant.id + " trial " + std::to_string(trial.trial) + ": " + story.id + ", " +
+                          versionName(trial.version));
+                out_ += "</td><td>";
+                questions(story);
+                out_ += "</td></tr>\n";
+            }
+            out_ += "</tbody>\n</table>\n";
+        }
+
+        out_ += "<h3>Phase 2 \u2014 side by side, rated " + std::to_string(listing_.likertMinimum) + " to " +
+                std::to_string(listing_.likertMaximum) + "</h3>\n";
+        if (participant.phase2.empty()) {
+            out_ += "<p class=\"muted\">no phase-2 trials</p>\n";
+        } else {
+            out_ += "<table class=\"trials\">\n<thead><tr><th>#</th><th>Sentence</th><th>Clip</th>"
+                    "<th>Panels</th></tr></thead>\n<tbody>\n";
+            for (const ListedPhase2Trial& trial : participant.phase2) {
+                const ListedSentence& sentence = listing_.sentences[trial.sentence];
+                out_ += "<tr id=\"" + anchor + "-likert-" + std::to_string(trial.trial) + "\"><td class=\"num\">" +
+                        std::to_string(trial.trial) + "</td><td><a href=\"#" + sentenceAnchor_[trial.sentence] + "\">" +
+                        escapeHtml(sentence.id) + "</a><br><span class=\"gloss\">" + escapeHtml(sentence.gloss) +
+                        "</span></td><td class=\"clip quad\">";
+                video(sentence.clip, "none",
+                      participant.id + " phase-2 trial " + std::to_string(trial.trial) + ": " + sentence.id, true);
+                out_ += "</td><td>";
+                mapping(sentence);
+                out_ += "</td></tr>\n";
+            }
+            out_ += "</tbody>\n</table>\n";
+        }
+        out_ += "</div>\n</details>\n";
+    }
+
+    void stories() {
+        out_ += "<section id=\"stories\">\n<h2>Stories</h2>\n";
+        out_ += "<p class=\"note\">Each story in every version, side by side, with its sentences and questions.</p>\n";
+        for (std::size_t s = 0; s < listing_.stories.size(); ++s) {
+            const ListedStory& story = listing_.stories[s];
+            out_ += "<section class=\"story\" id=\"" + storyAnchor_[s] + "\">\n<h3>" + escapeHtml(story.id) +
+                    " \u2014 " + escapeHtml(story.title) + "</h3>\n";
+            if (!story.file.empty()) out_ += "<p class=\"muted\">from <code>" + escapeHtml(story.file) + "</code></p>\n";
+            out_ += "<div class=\"versions\">\n";
+            for (std::size_t v = 0; v < story.clips.size(); ++v) {
+                out_ += "<div class=\"version\">";
+                video(story.clips[v], "metadata", story.id + ", " + versionName(v));
+                out_ += "<p>" + versionBadge(v) + "</p></div>\n";
+            }
+            out_ += "</div>\n<h4>Sentences</h4>\n<ol class=\"sentences\">";
+            for (const std::string& gloss : story.sentences)
+                out_ += "<li><span class=\"gloss\">" + escapeHtml(gloss) + "</span></li>";
+            out_ += "</ol>\n<h4>Questions</h4>\n";
+            questions(story);
+            out_ += "\n</section>\n";
+        }
+        out_ += "</section>\n";
+    }
+
+    void sentences() {
+        out_ += "<section id=\"sentences\">\n<h2>Phase 2 sentences</h2>\n";
+        out_ += "<p class=\"note\">Each side-by-side clip with the version in each panel. Participants see only the "
+                "panel letters.</p>\n";
+        for (std::size_t s = 0; s < listing_.sentences.size(); ++s) {
+            const ListedSentence& sentence = listing_.sentences[s];
+            out_ += "<section class=\"sentence\" id=\"" + sentenceAnchor_[s] + "\">\n<h3>" + escapeHtml(sentence.id) +
+                    " \u2014 <span class=\"gloss\">" + escapeHtml(sentence.gloss) + "</span></h3>\n";
+            out_ += "<p class=\"muted\">verb <span class=\"gloss\">" + escapeHtml(sentence.verb) +
+                    "</span> \u00b7 panels <code>" + escapeHtml(sentence.panelCode) + "</code></p>\n";
+            out_ += "<div class=\"sentence-body\">";
+            video(sentence.clip, "metadata", sentence.id, true);
+            mapping(sentence);
+            out_ += "</div>\n</section>\n";
+        }
+        out_ += "</section>\n";
+    }
+
+    const StudyListing& listing_;
+    std::pair<unsigned, unsigned> frame_;
+    Anchors anchors_;
+    std::vector<std::string> storyAnchor_, sentenceAnchor_, participantAnchor_;
+    std::string out_;
+};
+
+}  // namespace
+
+std::string reviewPageHtml(const StudyListing& listing) {
+    return PageWriter(listing).write();
+}
+
+}  // namespace signstim::stimuli
