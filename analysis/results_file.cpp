@@ -5,6 +5,7 @@
 #include "common/sha256.hpp"
 #include "stimuli/json_source.hpp"
 #include "stimuli/study/study.hpp"
+#include "stimuli/study/study_folder.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -434,19 +435,8 @@ std::vector<ParticipantResults> readResultsFiles(const std::vector<fs::path>& fi
 }
 
 StudyListing readStudyManifest(const fs::path& studyDirOrManifest, std::string* manifestPath) {
-    const fs::path file = fs::is_directory(studyDirOrManifest) ? studyDirOrManifest / "manifest.json" : studyDirOrManifest;
-    if (fs::is_directory(studyDirOrManifest) && !fs::exists(file))
-        throw InputError(studyDirOrManifest.string(), 0, "--study",
-                         "no manifest.json: give the folder of a complete study (`signstim study ... --out DIR`)");
-    const stimuli::JsonSource source = stimuli::readJsonFile(file);
-    source.checkFormat("signstim-study-manifest", 1);
-    if (!source.root.is_object() || !source.root.contains("format"))
-        source.failAt("", "not a study manifest (no \"format\": \"signstim-study-manifest\")");
-    const auto study = source.root.find("study");
-    if (study == source.root.end())
-        source.failAt("", "this manifest has no \"study\" listing (written by an older signstim?): re-run `signstim study` on the folder");
-    if (manifestPath) *manifestPath = file.string();
-    return stimuli::withJsonErrors(source, [&] { return stimuli::listingFromJson(*study, file.string() + " (/study)"); });
+    // The study folder's reader (stimuli/study/study_folder.hpp); the folder is named by --study.
+    return stimuli::readStudyManifestListing(studyDirOrManifest, "--study", manifestPath);
 }
 
 }  // namespace signstim::analysis

@@ -7,6 +7,7 @@
 #include "common/error.hpp"
 #include "stimuli/scenes_path.hpp"
 #include "stimuli/study/study.hpp"
+#include "stimuli/study/study_folder.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -34,6 +35,7 @@ struct StudyCommandOptions {
     std::string scenesDir;
     std::string lexicon;
     bool quiet = false;
+    bool force = false;
 };
 
 StudyRunOptions runOptions(const StudyCommandOptions& o) {
@@ -48,6 +50,7 @@ StudyRunOptions runOptions(const StudyCommandOptions& o) {
     r.scenesDir = o.scenesDir;
     r.lexicon = o.lexicon;
     r.quiet = o.quiet;
+    r.force = o.force;
     std::tie(r.shardIndex, r.shardCount) = o.shard.empty() ? shardFromEnvironment() : parseShard(o.shard);
     return r;
 }
@@ -121,13 +124,19 @@ void registerStudyCommands(Commands& commands) {
                       "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ installed beside signstim)");
     study->add_option("--lexicon", o->lexicon, "Lexicon: a file or a folder of .json files (default: SCENES/lexicon/)");
     study->add_flag("--quiet", o->quiet, "No progress on stderr");
+    study->add_flag("--force", o->force,
+                    "Write into an --out folder that holds other files (they are kept: nothing is deleted that signstim did "
+                    "not write)");
 
     auto verifyDir = std::make_shared<std::string>();
     CLI::App* verify = study->add_subcommand(
         "verify", "Check every file of a study folder against its manifest (size and SHA-256) and that no unit is missing");
     verify->add_option("DIR", *verifyDir, "Study folder")->required();
     verify->callback([verifyDir, o] {
-        const std::vector<std::string> problems = verifyStudyFolder(*verifyDir, o->quiet);
+        const stimuli::StudyVerification result = stimuli::verifyStudyFolder(*verifyDir);
+        if (!o->quiet)
+            std::fprintf(stderr, "signstim study verify: %zu of %zu files match the manifest\n", result.checked, result.listed);
+        const std::vector<std::string>& problems = result.problems;
         if (problems.empty()) {
             std::printf("%s: verified\n", verifyDir->c_str());
             return;
@@ -152,7 +161,11 @@ void registerStudyCommands(Commands& commands) {
     merge->callback([mergeDirs, mergeInto, mergeExperiment, o] {
         std::vector<fs::path> dirs(mergeDirs->begin(), mergeDirs->end());
         const fs::path target = mergeInto->empty() ? dirs.front() : fs::path(*mergeInto);
-        const StudyRunReport report = mergeStudyFolders(dirs, target, o->quiet, *mergeExperiment);
+        const stimuli::StudyMerge merged = stimuli::mergeStudyFolders(dirs, target, *mergeExperiment);
+        const stimuli::StudyFolderState& report = merged.state;
+        if (!o->quiet)
+            std::fprintf(stderr, "signstim study merge: %zu unit%s copied into %s\n", merged.copied, merged.copied == 1 ? "" : "s",
+                         target.string().c_str());
         if (!report.complete) {
             std::string message = std::to_string(report.missing.size()) + " of " + std::to_string(report.units) +
                                   " units are in none of the folders:";

@@ -1,15 +1,10 @@
 #pragma once
 // `signstim study`: a study file (docs/study.md) -> every stimulus clip, every participant's
-// schedule and exports, a manifest and a review page, in one output folder.
-//
-// Work units, sorted by name: one per phase-1 story (its V versions rendered together, the
-// frames outside the verbs drawn once for all of them) and one per phase-2 sentence (the V
-// versions side by side in one clip). A unit is complete when its record
-// (.signstim/units/<unit>.json: the hash of its inputs and each file's SHA-256) exists and
-// its files are there; a re-run skips complete units whose inputs are unchanged. --shard i/N
-// takes units i, i+N, i+2N, ... of the sorted list. When every unit is complete, the exports,
-// the review page and manifest.json are written (by the run that completes the set, or by
-// `study merge`).
+// schedule and exports, a manifest and a review page, in one output folder. The folder's layout
+// and rules (units, shards, records, plan, manifest, verify, merge, its lock) are
+// stimuli/study/study_folder.hpp's; this renders the units (a phase-1 story's V versions
+// together, the frames outside the verbs drawn once for all of them; a phase-2 sentence's
+// versions side by side) and drains their encoders.
 #include "stimuli/study/study_listing.hpp"
 
 #include <cstdint>
@@ -32,6 +27,7 @@ struct StudyRunOptions {
     std::string scenesDir;
     std::string lexicon;
     bool quiet = false;
+    bool force = false;               // write into a folder that holds other files (never deleting them)
 };
 
 struct StudyRunReport {
@@ -52,18 +48,6 @@ struct StudyRunReport {
 void checkStudy(const StudyRunOptions& options);
 
 StudyRunReport runStudy(const StudyRunOptions& options);
-
-// Every file of DIR's manifest present with its size and SHA-256, every unit of the plan
-// listed. Returns the problems (empty: verified); throws InputError when DIR has no manifest.
-std::vector<std::string> verifyStudyFolder(const std::filesystem::path& dir, bool quiet);
-
-// Copies the units of `sources` missing from `target` (which may be one of them), checking
-// each file's SHA-256 against its record, then writes the exports, review page and manifest,
-// and the jsPsych experiment when `experiment` is "jspsych" or any of the folders' runs asked
-// for it. Throws InputError when the folders hold different studies or units are missing.
-StudyRunReport mergeStudyFolders(const std::vector<std::filesystem::path>& sources,
-                                 const std::filesystem::path& target, bool quiet,
-                                 const std::string& experiment = "");
 
 // "2/8" -> {2, 8}: shard I of N, 0-based (I = SLURM_ARRAY_TASK_ID of `sbatch --array=0-(N-1)`).
 // Throws InputError naming --shard (exit 1).

@@ -356,7 +356,17 @@ std::string designText(const StudyListing& listing) {
     std::string text = "signstim study design 1\nseed " + std::to_string(listing.seed) + "\nversions";
     for (const std::string& v : listing.versions) text += " " + v;
     text += "\n";
-    for (const ListedStory& story : listing.stories) text += story.id + " " + story.file + "\n";
+    // What each story says (title, glosses, questions), not where its file lives: moving or
+    // renaming the stories' folder leaves the design, and a finished study, as it was.
+    for (const ListedStory& story : listing.stories) {
+        text += story.id + " " + story.title + "\n";
+        for (const std::string& gloss : story.sentences) text += "  " + gloss + "\n";
+        for (const ListedQuestion& q : story.questions) {
+            text += "  ? " + q.text + " |";
+            for (const std::string& choice : q.choices) text += " " + choice + " |";
+            text += " answer " + std::to_string(q.answer) + " probe " + q.probeVerb + " " + std::to_string(q.probeSentence) + "\n";
+        }
+    }
     for (const ListedSentence& sentence : listing.sentences)
         text += sentence.id + " " + sentence.panelCode + " " + sentence.gloss + "\n";
     for (const ListedParticipant& p : listing.participants) {

@@ -83,7 +83,8 @@ std::string likertClipName(std::size_t sentenceIndex, const std::string& panelCo
 StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories, const Story* phase2,
                        const std::string& toolVersion, bool pngFrames);
 
-// The design as canonical text: seed, versions, stories, sentences with their panels, every
+// The design as canonical text: seed, versions, stories (what they say: title, glosses and
+// questions; not where their files are), sentences with their panels, every
 // participant's group and trials in order. Its SHA-256 is StudyListing::designHash.
 std::string designText(const StudyListing& listing);
 

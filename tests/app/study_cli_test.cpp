@@ -144,8 +144,8 @@ TEST(StudyCli, RendersPlayableClipsResumesAndVerifyCatchesAChangedByte) {
     EXPECT_EQ(tampered.status, 2) << tampered.output;
     EXPECT_NE(tampered.output.find("clips/story-02_version-vector.mp4: SHA-256 differs"), std::string::npos)
         << tampered.output;
-    // A deleted clip of a complete unit is rendered again by the next run (its unit only).
-    fs::remove(clip);
+    // The next run renders that unit again (its unit only): a changed byte of the same size is
+    // found as a missing clip is. Until it has, the folder has no manifest.
     const auto repaired = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(copy.string())));
     ASSERT_EQ(repaired.status, 0) << repaired.output;
     EXPECT_NE(repaired.output.find("1 of 8 units rendered, 7 already complete"), std::string::npos) << repaired.output;
@@ -244,6 +244,29 @@ TEST(StudyCli, ExperimentWithoutJsPsychFailsBeforeRenderingAndSaysHowToGetIt) {
     EXPECT_FALSE(fs::exists(dir / "clips")) << "rendered before finding out";
     // A command-line mistake is exit 1.
     EXPECT_EQ(runSignstim(study(shellQuote(kSmall) + " --experiment psychopy --out " + shellQuote(dir.string()))).status, 1);
+}
+
+TEST(StudyCli, OutRefusesTheWorkingDirectoryHomeAndAFolderOfOtherFilesBeforeRendering) {
+    const fs::path dir = freshDir("theirs");
+    fs::create_directories(dir);
+    std::ofstream(dir / "notes.txt") << "someone's notes\n";
+    const auto theirs = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(dir.string())));
+    EXPECT_EQ(theirs.status, 2) << theirs.output;
+    EXPECT_NE(theirs.output.find("notes.txt"), std::string::npos) << theirs.output;
+    EXPECT_NE(theirs.output.find("--force"), std::string::npos) << theirs.output;
+    EXPECT_FALSE(fs::exists(dir / "clips"));
+    EXPECT_FALSE(fs::exists(dir / ".signstim"));
+    EXPECT_EQ(readFile(dir / "notes.txt"), "someone's notes\n");
+    const auto here = runShell("cd " + shellQuote(dir.string()) + " && " +
+                               shellQuote(fs::path(SIGNSTIM_BINARY_DIR).append("signstim").string()) + " " +
+                               study(shellQuote(kSmall) + " --quiet --force --out ."));
+    EXPECT_EQ(here.status, 2) << here.output;
+    EXPECT_NE(here.output.find("working directory"), std::string::npos) << here.output;
+    const auto home = runSignstim(study(shellQuote(kSmall) + " --quiet --force --out " + shellQuote(dir.string())),
+                                  Capture::StdoutAndStderr, "HOME=" + shellQuote(dir.string()));
+    EXPECT_EQ(home.status, 2) << home.output;
+    EXPECT_NE(home.output.find("home folder"), std::string::npos) << home.output;
+    EXPECT_FALSE(fs::exists(dir / "clips"));
 }
 
 TEST(StudyCli, ExperimentIsWrittenWithTheStudyIntoTheManifestAndKeptByLaterRuns) {

@@ -150,6 +150,22 @@ TEST(StudyPlan, DesignHashFollowsTheDesignNotTheRenderSettings) {
     EXPECT_EQ(a.designHash.size(), 64u);
 }
 
+TEST(StudyPlan, DesignHashReadsWhatTheStoriesSayNotWhereTheyLive) {
+    std::vector<Story> stories = fakeStories(8);
+    const Story sentences = fakeSentences();
+    const StudyListing a = planStudy(parse(kStudy), stories, &sentences, "1", false);
+    StudyFile moved = parse(kStudy);
+    for (StudyFile::StoryEntry& entry : moved.stories) {
+        entry.written = "renamed-stories/" + entry.path.filename().string();
+        entry.path = std::filesystem::path("/elsewhere") / entry.written;
+    }
+    const StudyListing b = planStudy(moved, stories, &sentences, "1", false);
+    EXPECT_NE(b.stories.front().file, a.stories.front().file);
+    EXPECT_EQ(b.designHash, a.designHash);
+    stories[2].sentences[0].gloss += " AGAIN";
+    EXPECT_NE(planStudy(parse(kStudy), stories, &sentences, "1", false).designHash, a.designHash);
+}
+
 TEST(StudyPlan, ListingRoundTripsThroughJson) {
     const std::vector<Story> stories = fakeStories(8);
     const Story sentences = fakeSentences();

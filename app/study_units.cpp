@@ -1,0 +1,310 @@
+#include "app/study_units.hpp"
+
+#include "app/clip_output.hpp"
+#include "common/atomic_file.hpp"
+#include "common/file_manifest.hpp"
+#include "renderer/frame_sink.hpp"
+#include "renderer/image_io.hpp"
+#include "renderer/renderer.hpp"
+#include "signer/avatar_render.hpp"
+#include "signer/timeline_clip.hpp"
+#include "signer/verb_render.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <future>
+#include <thread>
+
+namespace signstim::app {
+
+using namespace signstim::stimuli;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// ---- sinks ----------------------------------------------------------------------------------
+
+// Every frame to both sinks (the MP4 and, when asked, the PNG frames).
+class TeeSink final : public render::FrameSink {
+public:
+    TeeSink(render::FrameSink& first, render::FrameSink& second) : first_(first), second_(second) {}
+    void push(render::Image&& frame) override {
+        first_.push(render::Image(frame));
+        second_.push(std::move(frame));
+        ++count_;
+    }
+    void finish() override {
+        first_.finish();
+        second_.finish();
+    }
+    std::uint64_t framesPushed() const override { return count_; }
+    bool recycle(render::Image& out) override { return second_.recycle(out); }
+
+private:
+    render::FrameSink& first_;
+    render::FrameSink& second_;
+    std::uint64_t count_ = 0;
+};
+
+// The sinks of one clip: MP4, optional PNG frames, the poster captured on the way.
+struct ClipSinks {
+    std::unique_ptr<render::FrameSink> video, frames;
+    std::unique_ptr<TeeSink> tee;
+    std::unique_ptr<signer::StillCapturingSink> still;
+    bool finished = false;
+    render::FrameSink* entry() { return still.get(); }
+    void finish() {
+        if (finished) return;
+        finished = true;
+        still->finish();
+    }
+};
+
+std::unique_ptr<ClipSinks> makeClipSinks(const fs::path& dir, const ListedClip& clip, const render::FrameRate& rate,
+                                         std::uint64_t posterFrame) {
+    auto sinks = std::make_unique<ClipSinks>();
+    render::VideoOptions video;
+    video.frameRate = rate;
+    video.threads = 1;  // identical bytes on every machine; parallelism is one encoder per clip
+    video.niceness = 5;
+    sinks->video = render::makeVideoSink(dir / clip.video, video, 8);
+    render::FrameSink* next = sinks->video.get();
+    if (!clip.frames.empty()) {
+        sinks->frames = render::makePngSequenceSink(dir / clip.frames, {}, 1);
+        sinks->tee = std::make_unique<TeeSink>(*sinks->video, *sinks->frames);
+        next = sinks->tee.get();
+    }
+    sinks->still = std::make_unique<signer::StillCapturingSink>(*next, posterFrame);
+    return sinks;
+}
+
+// Where a clip's poster is taken: the middle of its first verb (where the versions differ).
+double posterSeconds(const Timeline& timeline) {
+    for (const TimelineSpan& span : timeline.spans)
+        if (span.kind == SpanKind::Verb) return 0.5 * (span.startSeconds + span.endSeconds);
+    return 0.5 * timeline.durationSeconds;
+}
+
+
+}  // namespace
+
+// ---- rendering --------------------------------------------------------------------------------
+
+// Renders the units of one run: one renderer (the device), encoders running beside it. A
+// unit's encoders are finished, its posters written and its record committed on a worker
+// while the renderer goes on with the next unit, as long as no more than `limit` encoders run.
+struct UnitRenderer::State {
+    State(const LoadedStudy& s, const StudyRunOptions& options, const fs::path& dir)
+        : s_(s), options_(options), dir_(dir),
+          signer_(s.world->scenes),
+          renderer_(signer::signerRendererOptions(s.settings.width, s.settings.height, s.settings.msaa, options.device)) {
+        handle_ = renderer_.addScene(signer_.avatar());
+        const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+        // A story's versions are encoded together (its shared frames go to all of them at
+        // once); the naive baseline finishes each clip before the next.
+        limit_ = options.shareFrames ? std::max<std::size_t>(options.jobs > 0 ? options.jobs : cores, s.study.versions.size())
+                                     : 1;
+    }
+
+    ~State() {
+        // On an error the workers still hold sinks that reference nothing of ours; let them end.
+        for (Pending& p : pending_)
+            if (p.done.valid()) p.done.wait();
+    }
+
+    void render(const StudyUnit& unit, const std::vector<Timeline>& timelines, const std::string& inputHash,
+                const std::function<void(double)>& progress, StudyRunReport& report) {
+        std::vector<std::unique_ptr<signer::TimelineClip>> clips;
+        for (const Timeline& t : timelines)
+            clips.push_back(std::make_unique<signer::TimelineClip>(signer_.rig(), signer_.shapes(), t));
+        std::vector<const signer::Clip*> clipPointers;
+        for (const auto& c : clips) clipPointers.push_back(c.get());
+        const double fps = s_.frameRate.value();
+        const std::uint64_t poster = static_cast<std::uint64_t>(posterSeconds(timelines.front()) * fps);
+
+        auto job = std::make_shared<Job>();
+        job->unit = unit;
+        job->inputHash = inputHash;
+        std::vector<render::FrameSink*> entries;
+        if (unit.story) {
+            const ListedStory& story = s_.listing.stories[unit.index];
+            for (std::size_t v = 0; v < story.clips.size(); ++v) {
+                const ListedClip& clip = story.clips[v];
+                job->clips.push_back(clip);
+                job->shows.push_back({{"phase", 1}, {"story", story.id}, {"title", story.title},
+                                      {"version", s_.listing.versions[v]}});
+                job->sinks.push_back(makeClipSinks(dir_, clip, s_.frameRate, poster));
+                entries.push_back(job->sinks.back()->entry());
+            }
+        } else {
+            const ListedSentence& sentence = s_.listing.sentences[unit.index];
+            json panels = json::object();
+            for (std::size_t k = 0; k < sentence.panelVersion.size(); ++k)
+                panels[panelLabel(k)] = s_.listing.versions[sentence.panelVersion[k]];
+            job->clips.push_back(sentence.clip);
+            job->shows.push_back({{"phase", 2}, {"sentence", sentence.id}, {"gloss", sentence.gloss}, {"verb", sentence.verb},
+                                  {"panels", panels}});
+            job->sinks.push_back(makeClipSinks(dir_, job->clips.back(), s_.frameRate, poster));
+        }
+        waitForEncoders(job->sinks.size(), report);
+
+        const auto start = Clock::now();
+        if (unit.story) {
+            const auto frameProgress = [&](std::uint64_t done, std::uint64_t total) {
+                progress(static_cast<double>(done) / static_cast<double>(total));
+            };
+            if (options_.shareFrames) {
+                const signer::SharedRenderStats stats = signer::renderClipsSharingFrames(
+                    renderer_, handle_, signer_.avatar(), signer_.rig(), clipPointers, fps, entries, frameProgress);
+                report.renderedImages += stats.renderedImages;
+                report.sharedFrames += stats.sharedFrames;
+                report.clipFrames += stats.frames * clips.size();
+                job->frames = stats.frames;
+            } else {
+                // The naive cost: each version drawn in full, one after the other.
+                std::uint64_t before = 0;
+                for (std::size_t i = 0; i < clips.size(); ++i) {
+                    signer::ClipRenderOptions ro;
+                    ro.framesPerSecond = fps;
+                    const std::uint64_t n = signer::renderClips(
+                        renderer_, handle_, signer_.avatar(), signer_.rig(), {clipPointers[i]}, {}, ro, *entries[i],
+                        [&](std::uint64_t done, std::uint64_t total) {
+                            progress(static_cast<double>(before + done) / static_cast<double>(total * clips.size()));
+                        });
+                    job->sinks[i]->finish();  // one clip after another, as separate runs would
+                    before += n;
+                    report.renderedImages += n;
+                    report.clipFrames += n;
+                    job->frames = n;
+                }
+            }
+        } else {
+            // Phase 2: the versions side by side, panel k showing panelVersion[k], labelled A, B, ...
+            const ListedSentence& sentence = s_.listing.sentences[unit.index];
+            std::vector<const signer::Clip*> panels;
+            std::vector<std::string> labels;
+            for (std::size_t k = 0; k < sentence.panelVersion.size(); ++k) {
+                panels.push_back(clipPointers[sentence.panelVersion[k]]);
+                labels.push_back(panelLabel(k));
+            }
+            signer::ClipRenderOptions ro;
+            ro.framesPerSecond = fps;
+            ro.columns = static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(panels.size()))));
+            ro.rows = static_cast<std::uint32_t>((panels.size() + ro.columns - 1) / ro.columns);
+            const std::uint64_t n =
+                signer::renderClips(renderer_, handle_, signer_.avatar(), signer_.rig(), panels, labels, ro,
+                                    *job->sinks.front()->entry(), [&](std::uint64_t done, std::uint64_t total) {
+                                        progress(static_cast<double>(done) / static_cast<double>(total));
+                                    });
+            report.renderedImages += n;
+            report.clipFrames += n;
+            job->frames = n;
+        }
+        report.renderSeconds += secondsSince(start);
+        failOnValidationMessages(renderer_);
+
+        // Finish on a worker: encoders drain while the next unit renders.
+        const fs::path dir = dir_;
+        const render::FrameRate rate = s_.frameRate;
+        const StudyRenderSettings settings = s_.settings;
+        Pending pending;
+        pending.encoders = job->sinks.size();
+        pending.done = std::async(std::launch::async, [job, dir, rate, settings] { finishUnit(*job, dir, rate, settings); });
+        pending_.push_back(std::move(pending));
+    }
+
+    void finishAll(StudyRunReport& report) {
+        const auto start = Clock::now();
+        while (!pending_.empty()) {
+            pending_.front().done.get();
+            pending_.pop_front();
+        }
+        report.encodeWaitSeconds += secondsSince(start);
+    }
+
+    struct Job {
+        StudyUnit unit;
+        std::string inputHash;
+        std::vector<ListedClip> clips;
+        std::vector<json> shows;  // what each clip shows, for the manifest
+        std::vector<std::unique_ptr<ClipSinks>> sinks;
+        std::uint64_t frames = 0;
+    };
+    struct Pending {
+        std::size_t encoders = 0;
+        std::future<void> done;
+    };
+
+    void waitForEncoders(std::size_t needed, StudyRunReport& report) {
+        const auto start = Clock::now();
+        auto running = [&] {
+            std::size_t n = 0;
+            for (const Pending& p : pending_) n += p.encoders;
+            return n;
+        };
+        while (!pending_.empty() && running() + needed > limit_) {
+            pending_.front().done.get();
+            pending_.pop_front();
+        }
+        report.encodeWaitSeconds += secondsSince(start);
+    }
+
+    static void finishUnit(Job& job, const fs::path& dir, const render::FrameRate& rate, const StudyRenderSettings& settings) {
+        json files = json::array();
+        for (std::size_t i = 0; i < job.sinks.size(); ++i) {
+            ClipSinks& sinks = *job.sinks[i];
+            sinks.finish();
+            const ListedClip& clip = job.clips[i];
+            render::writeImage(sinks.still->still(), dir / clip.poster);
+            json video = describeFile(dir, clip.video, "video");
+            video["frames"] = job.frames;
+            video["fps"] = rate.text();
+            video["width"] = settings.width;
+            video["height"] = settings.height;
+            video["durationSeconds"] = static_cast<double>(job.frames) / rate.value();
+            video["shows"] = job.shows[i];
+            files.push_back(video);
+            json poster = describeFile(dir, clip.poster, "poster");
+            poster["width"] = settings.width;
+            poster["height"] = settings.height;
+            poster["shows"] = job.shows[i];
+            files.push_back(poster);
+            if (!clip.frames.empty()) {
+                json frames = describeFile(dir, clip.frames, "frames");
+                frames["shows"] = job.shows[i];
+                files.push_back(frames);
+            }
+        }
+        writeUnitRecord(dir, job.unit.id, job.inputHash, job.frames, files);
+    }
+
+    const LoadedStudy& s_;
+    const StudyRunOptions& options_;
+    fs::path dir_;
+    signer::Signer signer_;
+    render::Renderer renderer_;
+    int handle_ = 0;
+    std::size_t limit_ = 4;
+    std::deque<Pending> pending_;
+};
+
+
+UnitRenderer::UnitRenderer(const LoadedStudy& s, const StudyRunOptions& options, const fs::path& dir)
+    : state_(std::make_unique<State>(s, options, dir)) {}
+
+UnitRenderer::~UnitRenderer() = default;
+
+void UnitRenderer::render(const StudyUnit& unit, const std::vector<Timeline>& timelines, const std::string& inputHash,
+                          const std::function<void(double)>& progress, StudyRunReport& report) {
+    state_->render(unit, timelines, inputHash, progress, report);
+}
+
+void UnitRenderer::finishAll(StudyRunReport& report) { state_->finishAll(report); }
+
+}  // namespace signstim::app
