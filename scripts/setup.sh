@@ -31,6 +31,8 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglm-dev libtinygltf-dev nlohmann-json3-dev libeigen3-dev
   libcli11-dev libgtest-dev
+  # SHA-256 of every file a manifest lists (common/sha256.hpp): Nettle, small and well kept.
+  nettle-dev
   # `signstim analyze`: Boost.Math's chi-squared, normal and Student's t distributions
   # (header-only; the package brings libboost1.74-dev and its CMake config).
   libboost-math-dev
