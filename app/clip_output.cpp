@@ -1,14 +1,14 @@
 #include "app/clip_output.hpp"
 
+#include "app/progress.hpp"
 #include "common/atomic_file.hpp"
 #include "renderer/image_io.hpp"
 #include "renderer/renderer.hpp"
 #include "signer/avatar_render.hpp"
 
-#include <chrono>
 #include <cstdio>
-#include <unistd.h>
 #include <memory>
+#include <string>
 
 namespace signstim::app {
 
@@ -44,25 +44,18 @@ std::uint64_t renderClipToOutput(const ClipOutput& output, const signer::Signer&
     std::unique_ptr<render::FrameSink> target =
         still ? render::makeDiscardSink() : render::makeFrameSink(output.out, {}, video);
     signer::StillCapturingSink sink(*target, static_cast<std::uint64_t>(stillSeconds * options.framesPerSecond));
-    // Progress: on a terminal one line rewritten in place, otherwise a line a second; with
-    // the time left estimated from the frames so far.
-    const bool terminal = ::isatty(STDERR_FILENO) == 1;
-    const auto start = std::chrono::steady_clock::now();
-    auto lastReport = start;
+    std::unique_ptr<ProgressReporter> progress;
     const std::uint64_t frames = signer::renderClips(
         renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink,
         [&](std::uint64_t done, std::uint64_t total) {
-            if (output.quiet) return;
-            const auto now = std::chrono::steady_clock::now();
-            if (done != total && now - lastReport < std::chrono::milliseconds(terminal ? 200 : 1000)) return;
-            lastReport = now;
-            const double elapsed = std::chrono::duration<double>(now - start).count();
-            const double left = elapsed / static_cast<double>(done) * static_cast<double>(total - done);
-            std::fprintf(stderr, "%ssignstim: frame %llu/%llu (%.0f%%), %.0f s left%s", terminal ? "\r" : "",
-                         static_cast<unsigned long long>(done), static_cast<unsigned long long>(total),
-                         100.0 * static_cast<double>(done) / static_cast<double>(total), left,
-                         terminal && done != total ? "" : "\n");
+            if (!progress) progress = std::make_unique<ProgressReporter>("signstim", static_cast<double>(total), output.quiet);
+            const std::string what = "frame " + std::to_string(done) + "/" + std::to_string(total);
+            if (done == total)
+                progress->stepDone(static_cast<double>(done), what);
+            else
+                progress->update(static_cast<double>(done), what);
         });
+    if (progress) progress->end();
     failOnValidationMessages(renderer);
     sink.finish();
     if (!still) return frames;

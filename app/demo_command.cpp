@@ -1,14 +1,15 @@
-// `signstim demo`: the main job until the study composer exists — the most complete
-// demonstration the project can render: the handshape gallery, and every indicating verb in
-// its four versions side by side (SPEC §4.3 layout), with a manifest listing every file.
+// `signstim demo`: the verbs at a glance (the main job is `signstim study`, docs/study.md): the
+// handshape gallery, and every indicating verb in its four versions side by side (SPEC §4.3
+// layout), with a manifest listing every file (common/file_manifest.hpp, the study's writer).
 #include "signer/avatar_render.hpp"
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
+#include "app/progress.hpp"
 #include "signer/signer_pose.hpp"
 #include "signer/verb_render.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
-#include "common/sha256.hpp"
+#include "common/file_manifest.hpp"
 #include "renderer/frame_sink.hpp"
 #include "renderer/image_io.hpp"
 #include "renderer/renderer.hpp"
@@ -22,14 +23,12 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
 
 namespace signstim::app {
 
@@ -65,15 +64,18 @@ std::string positionText(double p) {
 
 nlohmann::json fileEntry(const fs::path& root, const fs::path& file, const std::string& shows,
                          std::uint32_t width, std::uint32_t height, std::uint64_t frames, double fps) {
-    nlohmann::json entry;
-    entry["path"] = fs::relative(file, root).generic_string();
-    entry["sha256"] = sha256File(file);
+    nlohmann::json entry = describeFile(root, fs::relative(file, root).generic_string(), frames > 1 ? "video" : "image");
     entry["width"] = width;
     entry["height"] = height;
     entry["frames"] = frames;
     if (frames > 1) entry["fps"] = fps;
     entry["shows"] = shows;
     return entry;
+}
+
+// "ASK (3/10)": the verb being drawn, for the progress line.
+std::string verbProgress(const stimuli::VerbDefinition& verb, std::size_t v, std::size_t count) {
+    return verb.name + " (" + std::to_string(v + 1) + "/" + std::to_string(count) + ")";
 }
 
 void runDemo(const DemoOptions& o) {
@@ -130,10 +132,7 @@ void runDemo(const DemoOptions& o) {
     // to be overwritten, so an earlier one goes before the first of them; the new one is
     // written last. A run that fails from here on leaves no manifest.
     const fs::path manifestFile = root / "manifest.json";
-    if (::unlink(manifestFile.c_str()) != 0 && errno != ENOENT) {
-        const int error = errno;
-        throw IoError(manifestFile.string(), "cannot remove the earlier manifest", error);
-    }
+    removeStaleFile(manifestFile);
     nlohmann::json files = nlohmann::json::array();
 
     // 1. The handshape gallery.
@@ -162,7 +161,7 @@ void runDemo(const DemoOptions& o) {
     for (std::size_t i = 0; i < kVersions.size(); ++i)
         labels.push_back(std::string(letters[i]) + " " + stimuli::toString(kVersions[i]));
 
-    const bool interactive = ::isatty(STDERR_FILENO) != 0;
+    ProgressReporter progress("signstim demo", static_cast<double>(chosen.size()), o.quiet);
     render::VideoOptions video;
     video.frameRate = frameRate;
     for (std::size_t v = 0; v < chosen.size(); ++v) {
@@ -181,15 +180,12 @@ void runDemo(const DemoOptions& o) {
         const std::uint64_t frames = renderClips(
             renderer, handle, avatar, rig, views, labels, clipOptions, sink,
             [&](std::uint64_t done, std::uint64_t total) {
-                // A live counter on a terminal; one line per verb in logs.
-                if (o.quiet || (!interactive && done != total)) return;
-                std::fprintf(stderr, "%ssignstim: [%zu/%zu] %s: frame %llu/%llu", interactive ? "\r" : "", v + 1,
-                             chosen.size(), verb.name.c_str(), static_cast<unsigned long long>(done),
-                             static_cast<unsigned long long>(total));
+                progress.update(static_cast<double>(v) + static_cast<double>(done) / static_cast<double>(total),
+                                verbProgress(verb, v, chosen.size()));
             });
         sink.finish();
         render::writeImage(sink.still(), still);
-        if (!o.quiet) std::fprintf(stderr, "\n");
+        progress.stepDone(static_cast<double>(v + 1), verbProgress(verb, v, chosen.size()));
         const std::string shows = verb.name + " (" + verb.movement + ") in the four versions, in sync: A point, B "
                                   "vector, C animator, D uninflected; " +
                                   (verb.objectOnly() ? "" : "subject " + positionText(o.subject) + ", ") +
@@ -207,7 +203,7 @@ void runDemo(const DemoOptions& o) {
     manifest["note"] = "Point and vector versions come from models trained on the synthetic reference corpus "
                        "(scenes/corpus/reference_corpus.csv), not on motion capture.";
     manifest["files"] = files;
-    writeFileAtomic(manifestFile, manifest.dump(2) + "\n");
+    writeManifest(manifestFile, manifest);
 }
 
 }  // namespace

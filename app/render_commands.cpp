@@ -2,6 +2,7 @@
 // sequence or an MP4.
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
+#include "app/progress.hpp"
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -81,7 +82,6 @@ constexpr double kLongestClipSeconds = 3600.0;
 std::int64_t mostFrames(double fps) { return static_cast<std::int64_t>(std::ceil(kLongestClipSeconds * fps - 1e-4)) + 1; }
 
 void renderGltf(const RenderGltfSettings& s) {
-    using Clock = std::chrono::steady_clock;
     render::RendererOptions options;
     const ImageSize size = parseImageSize(s.size, "--size");
     options.width = size.width;
@@ -184,18 +184,13 @@ void renderGltf(const RenderGltfSettings& s) {
         frame.views.push_back(render::View{handle, poseAt(i), camera, ""});
         return frame;
     };
-    const auto start = Clock::now();
-    auto lastReport = start;
-    auto report = [&](std::int64_t done, bool final) {
-        if (s.quiet) return;
-        const auto now = Clock::now();
-        if (!final && now - lastReport < std::chrono::milliseconds(500)) return;
-        lastReport = now;
-        const double seconds = std::chrono::duration<double>(now - start).count();
-        std::fprintf(stderr, "\rrender-gltf: %lld/%lld frames, %.1f fps", static_cast<long long>(done),
-                     static_cast<long long>(frames), seconds > 0 ? static_cast<double>(done) / seconds : 0.0);
-        if (final) std::fprintf(stderr, "\n");
-        std::fflush(stderr);
+    ProgressReporter progress("render-gltf", static_cast<double>(frames), s.quiet);
+    const auto report = [&](std::int64_t done, bool final) {
+        const std::string what = std::to_string(done) + "/" + std::to_string(frames) + " frames";
+        if (final)
+            progress.stepDone(static_cast<double>(done), what);
+        else
+            progress.update(static_cast<double>(done), what);
     };
     // Pipelined: keep the renderer's frames in flight busy while the sink encodes.
     const std::int64_t inFlight = std::max(1u, renderer.framesInFlight());
@@ -215,6 +210,7 @@ void renderGltf(const RenderGltfSettings& s) {
     }
     sink->finish();
     report(done, true);
+    progress.end();
 }
 
 }  // namespace
