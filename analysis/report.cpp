@@ -1,6 +1,7 @@
 #include "analysis/report.hpp"
 
 #include "analysis/svg.hpp"
+#include "stimuli/study/study_exports.hpp"
 #include "analysis/text_format.hpp"
 #include "common/number_format.hpp"
 #include "renderer/image_io.hpp"
@@ -82,7 +83,7 @@ json comparisonJson(const StudyAnalysis& a, const Comparison& c) {
 
 // ---- HTML -----------------------------------------------------------------------------------
 
-std::string h(const std::string& text) { return escapeXml(text); }
+std::string h(const std::string& text) { return stimuli::escapeHtml(text); }
 std::string orDash(const std::string& text) { return text.empty() ? "&ndash;" : h(text); }
 
 std::string pairLabel(const StudyAnalysis& a, const PairTest& p) { return a.versions[p.first] + " vs " + a.versions[p.second]; }

@@ -1,5 +1,7 @@
 #include "analysis/svg.hpp"
 
+#include "stimuli/study/study_exports.hpp"
+
 #include <cmath>
 #include <cstdio>
 
@@ -55,31 +57,16 @@ std::string item(const DrawText& t) {
     if (t.bold) s += " font-weight=\"bold\"";
     if (!(t.colour == Colour{})) s += " fill=\"" + colour(t.colour) + "\"";
     if (t.vertical) s += " transform=\"rotate(-90 " + num(t.x) + " " + num(t.y) + ")\"";
-    return s + ">" + escapeXml(t.text) + "</text>";
+    return s + ">" + stimuli::escapeHtml(t.text) + "</text>";
 }
 
 }  // namespace
-
-std::string escapeXml(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&#39;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 std::string svgElement(const Drawing& drawing) {
     std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(drawing.width) + "\" height=\"" + num(drawing.height) +
                     "\" viewBox=\"0 0 " + num(drawing.width) + " " + num(drawing.height) +
                     "\" role=\"img\" font-family=\"DejaVu Sans, Verdana, Arial, sans-serif\" shape-rendering=\"crispEdges\">\n";
-    s += "<title>" + escapeXml(drawing.title) + "</title>\n";
+    s += "<title>" + stimuli::escapeHtml(drawing.title) + "</title>\n";
     s += "<rect width=\"100%\" height=\"100%\" fill=\"" + colour(drawing.background) + "\"/>\n";
     for (const DrawItem& i : drawing.items) s += std::visit([](const auto& shape) { return item(shape); }, i) + "\n";
     return s + "</svg>\n";

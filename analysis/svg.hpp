@@ -13,7 +13,7 @@ std::string svgDocument(const render::Drawing& drawing);
 // The <svg> element alone (inline in report.html), with role="img" and its title.
 std::string svgElement(const render::Drawing& drawing);
 
-// & < > " ' escaped for XML and HTML text and attributes.
-std::string escapeXml(const std::string& text);
+// Text in SVG and HTML is escaped by the project's one function, stimuli::escapeHtml
+// (stimuli/study/study_exports.hpp: & < > " ' as entities, safe in XML too).
 
 }  // namespace signstim::analysis
