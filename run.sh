@@ -27,7 +27,9 @@ if [[ $mode == test ]]; then
   # lavapipe renders with several threads per draw; two test processes keep both cores busy.
   ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
 else
-  # The default study at its quick settings (320x240, 15 fps): a few minutes on 2 cores.
-  # Full quality: build/signstim study --out study (docs/study.md).
-  "$build/signstim" study --out study --quick
+  # The default study at its quick settings (320x240, 15 fps): a few minutes on 2 cores, into
+  # out/study (out/ is in .gitignore, so the clips never show up in `git status`).
+  # Full quality: build/signstim study --out out/study-full (docs/study.md).
+  echo "run.sh: rendering the default study (quick) into out/study/"
+  "$build/signstim" study --out out/study --quick
 fi
