@@ -1,9 +1,11 @@
 #include "stimuli/story/story.hpp"
 
+#include "common/input_limits.hpp"
 #include "stimuli/story/gloss.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace signstim::stimuli {
 namespace {
@@ -19,17 +21,15 @@ struct TextPosition {
     int column = 0;
 };
 
-TextPosition positionOf(const std::string& text, std::size_t offset) {
+// The line from the parser's index (JsonSource::lineOfOffset: no scan from the start, so a
+// story of many sentences costs no more than linear time); the column counted on its line.
+TextPosition positionOf(const JsonSource& source, std::size_t offset) {
+    const std::string& text = source.text;
     offset = std::min(offset, text.size());
-    TextPosition p{1, 1};
-    for (std::size_t i = 0; i < offset; ++i) {
-        if (text[i] == '\n') {
-            ++p.line;
-            p.column = 1;
-        } else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) {  // count UTF-8 characters
-            ++p.column;
-        }
-    }
+    const std::size_t lineStart = offset == 0 ? 0 : text.rfind('\n', offset - 1) + 1;  // npos + 1 == 0
+    TextPosition p{source.lineOfOffset(offset), 1};
+    for (std::size_t i = lineStart; i < offset; ++i)
+        if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) ++p.column;  // count UTF-8 characters
     return p;
 }
 
@@ -165,9 +165,12 @@ private:
     }
 
     // Line of element `index` of the top-level array `key`, from its offset in the text.
+    // The offsets of each array are found once (a scan of the text), not once per element.
     TextPosition elementPosition(const std::string& key, std::size_t index) const {
-        const std::vector<std::size_t> offsets = topLevelArrayElements(source_.text, key);
-        if (index < offsets.size()) return positionOf(source_.text, offsets[index]);
+        auto found = elementOffsets_.find(key);
+        if (found == elementOffsets_.end()) found = elementOffsets_.emplace(key, topLevelArrayElements(source_.text, key)).first;
+        const std::vector<std::size_t>& offsets = found->second;
+        if (index < offsets.size()) return positionOf(source_, offsets[index]);
         return {source_.lineOf({"\"" + key + "\""}), 0};
     }
 
@@ -253,6 +256,11 @@ private:
 
     void requireSpellable(const std::string& letters, int line, int column, const std::string& field) const {
         if (letters.empty()) fail(line, field, "nothing to fingerspell", column);
+        if (letters.size() > limits::kFingerspelledLetters)
+            fail(line, field,
+                 std::to_string(letters.size()) + " letters to fingerspell; at most " +
+                     std::to_string(limits::kFingerspelledLetters) + " (docs/errors.md, Limits)",
+                 column);
         for (std::size_t i = 0; i < letters.size(); ++i) {
             const char c = letters[i];
             if (c < 'A' || c > 'Z')
@@ -275,6 +283,11 @@ private:
     void readSentences(const json& list) {
         if (!list.is_array() || list.empty())
             fail(lineOfKey({}, "sentences"), "/sentences", "expected a list of sentences in gloss, e.g. \"JOHN IX(0.9) ASK MARY IX(-0.6)\"");
+        // Refused before any sentence is checked (each costs a synthesis in four versions).
+        if (list.size() > limits::kStorySentences)
+            fail(lineOfKey({}, "sentences"), "/sentences",
+                 std::to_string(list.size()) + " sentences; a story has at most " + std::to_string(limits::kStorySentences) +
+                     " (docs/errors.md, Limits): split it into several stories");
         placed_.assign(story_.characters.size(), false);
         for (std::size_t i = 0; i < list.size(); ++i) {
             const TextPosition where = elementPosition("sentences", i);
@@ -295,6 +308,11 @@ private:
         const GlossParse parsed = parseGloss(gloss);
         auto column = [&](int withinSentence) { return firstColumn + withinSentence - 1; };
         if (parsed.error) fail(line, field, parsed.error->message, column(parsed.error->column));
+        if (parsed.items.size() > limits::kSentenceSigns)
+            fail(line, field,
+                 std::to_string(parsed.items.size()) + " signs in one sentence; at most " +
+                     std::to_string(limits::kSentenceSigns) + " (docs/errors.md, Limits): split the sentence",
+                 column(parsed.items[limits::kSentenceSigns].column));
 
         std::vector<std::size_t> verbItems;
         for (const GlossItem& written : parsed.items) {
@@ -538,6 +556,7 @@ private:
     const StoryVocabulary& vocabulary_;
     Story story_;
     std::vector<bool> placed_;
+    mutable std::map<std::string, std::vector<std::size_t>> elementOffsets_;  // elementPosition's cache
 };
 
 }  // namespace
@@ -555,7 +574,7 @@ Story parseStory(const JsonSource& source, const StoryVocabulary& vocabulary) {
 }
 
 Story loadStory(const std::filesystem::path& file, const StoryVocabulary& vocabulary) {
-    return parseStory(readJsonFile(file), vocabulary);
+    return parseStory(readJsonFile(file, limits::kStoryFileBytes), vocabulary);
 }
 
 }  // namespace signstim::stimuli
