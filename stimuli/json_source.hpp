@@ -9,9 +9,10 @@
 // over its size limit is refused before it is parsed, nesting deeper than limits::kJsonDepth
 // when it is met, and a string or key holding a control character (NUL, ESC...; tab and line
 // break are allowed) with its line and field, so no such byte reaches a CSV, a page or a message.
-// Older readers still name places by text anchors (lineOf), an approximation that is exact
-// for files written one field per line; fail() uses the parser's offsets whenever the field
-// is a JSON pointer.
+// Lines come from the parser's offsets (lineAt, one way). The text search by anchors (lineOf)
+// is left only as fail()'s fallback for readers whose fields are not JSON pointers
+// (handshapes.json's "handshapes[B].bend", sensor files' "digits.index"): an approximation,
+// exact for files written one field per line.
 #include "common/error.hpp"
 #include "common/input_limits.hpp"
 #include "stimuli/number_ranges.hpp"

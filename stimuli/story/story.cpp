@@ -106,20 +106,20 @@ public:
     Story read() {
         const json& root = source_.root;
         if (!root.is_object()) fail(1, "", "a story file is a JSON object {\"format\": \"signstim-story\", ...}");
-        checkKnownKeys(root, {"format", "version", "title", "characters", "sentences", "questions", "notes"}, "", {});
-        const std::string format = requiredString(root, "format", "", {});
+        checkKnownKeys(root, {"format", "version", "title", "characters", "sentences", "questions", "notes"}, "");
+        const std::string format = requiredString(root, "format", "");
         if (format != "signstim-story")
-            fail(lineOfKey({}, "format"), "/format", "expected \"signstim-story\", got \"" + format + "\"");
-        const json& version = required(root, "version", "", {});
+            fail(lineOfKey("", "format"), "/format", "expected \"signstim-story\", got \"" + format + "\"");
+        const json& version = required(root, "version", "");
         if (!version.is_number_integer() || version.get<long long>() != kStoryFormatVersion)
-            fail(lineOfKey({}, "version"), "/version",
+            fail(lineOfKey("", "version"), "/version",
                  "this signstim reads story files of version " + std::to_string(kStoryFormatVersion) + ", got " +
                      version.dump());
         story_.file = source_.file;
-        story_.title = requiredString(root, "title", "", {});
-        if (root.contains("notes")) story_.notes = requiredString(root, "notes", "", {});
-        readCharacters(required(root, "characters", "", {}));
-        readSentences(required(root, "sentences", "", {}));
+        story_.title = requiredString(root, "title", "");
+        if (root.contains("notes")) story_.notes = requiredString(root, "notes", "");
+        readCharacters(required(root, "characters", ""));
+        readSentences(required(root, "sentences", ""));
         // A story for phase 1 has questions (the study requires them); the sentences of phase 2
         // are a story without any.
         if (root.contains("questions")) readQuestions(root["questions"]);
@@ -131,27 +131,23 @@ private:
         throw InputError(source_.file, line, column, field, message);
     }
 
-    int lineOfKey(const std::vector<std::string>& anchors, const std::string& key) const {
-        std::vector<std::string> at = anchors;
-        at.push_back("\"" + key + "\"");
-        return source_.lineOf(at);
+    // The line of member `key` of the object at `pointer`, from the parser's index.
+    int lineOfKey(const std::string& pointer, const std::string& key) const {
+        return source_.lineAt(pointer + "/" + jsonPointerToken(key));
     }
 
-    const json& required(const json& object, const std::string& key, const std::string& pointer,
-                         const std::vector<std::string>& anchors) const {
-        if (!object.contains(key)) fail(source_.lineOf(anchors), pointer + "/" + key, "missing field '" + key + "'");
+    const json& required(const json& object, const std::string& key, const std::string& pointer) const {
+        if (!object.contains(key)) fail(source_.lineAt(pointer), pointer + "/" + key, "missing field '" + key + "'");
         return object[key];
     }
 
-    std::string requiredString(const json& object, const std::string& key, const std::string& pointer,
-                               const std::vector<std::string>& anchors) const {
-        const json& value = required(object, key, pointer, anchors);
-        if (!value.is_string()) fail(lineOfKey(anchors, key), pointer + "/" + key, "expected text in quotes");
+    std::string requiredString(const json& object, const std::string& key, const std::string& pointer) const {
+        const json& value = required(object, key, pointer);
+        if (!value.is_string()) fail(lineOfKey(pointer, key), pointer + "/" + key, "expected text in quotes");
         return value.get<std::string>();
     }
 
-    void checkKnownKeys(const json& object, std::initializer_list<const char*> known, const std::string& pointer,
-                        const std::vector<std::string>& anchors) const {
+    void checkKnownKeys(const json& object, std::initializer_list<const char*> known, const std::string& pointer) const {
         for (const auto& [key, value] : object.items()) {
             bool found = false;
             std::string list;
@@ -160,7 +156,7 @@ private:
                 list += (list.empty() ? "" : ", ") + std::string(k);
             }
             if (!found)
-                fail(lineOfKey(anchors, key), pointer + "/" + key, "unknown field '" + key + "' (known: " + list + ")");
+                fail(lineOfKey(pointer, key), pointer + "/" + key, "unknown field '" + key + "' (known: " + list + ")");
         }
     }
 
@@ -171,11 +167,11 @@ private:
         if (found == elementOffsets_.end()) found = elementOffsets_.emplace(key, topLevelArrayElements(source_.text, key)).first;
         const std::vector<std::size_t>& offsets = found->second;
         if (index < offsets.size()) return positionOf(source_, offsets[index]);
-        return {source_.lineOf({"\"" + key + "\""}), 0};
+        return {lineOfKey("", key), 0};
     }
 
     void readCharacters(const json& list) {
-        const int listLine = lineOfKey({}, "characters");
+        const int listLine = lineOfKey("", "characters");
         if (!list.is_array() || list.size() < 2 || list.size() > 6)
             fail(listLine, "/characters", "expected 2 to 6 characters, each {\"gloss\": \"JOHN\", \"position\": 0.9}");
         for (std::size_t i = 0; i < list.size(); ++i) {
@@ -282,10 +278,10 @@ private:
 
     void readSentences(const json& list) {
         if (!list.is_array() || list.empty())
-            fail(lineOfKey({}, "sentences"), "/sentences", "expected a list of sentences in gloss, e.g. \"JOHN IX(0.9) ASK MARY IX(-0.6)\"");
+            fail(lineOfKey("", "sentences"), "/sentences", "expected a list of sentences in gloss, e.g. \"JOHN IX(0.9) ASK MARY IX(-0.6)\"");
         // Refused before any sentence is checked (each costs a synthesis in four versions).
         if (list.size() > limits::kStorySentences)
-            fail(lineOfKey({}, "sentences"), "/sentences",
+            fail(lineOfKey("", "sentences"), "/sentences",
                  std::to_string(list.size()) + " sentences; a story has at most " + std::to_string(limits::kStorySentences) +
                      " (docs/errors.md, Limits): split it into several stories");
         placed_.assign(story_.characters.size(), false);
@@ -499,7 +495,7 @@ private:
 
     void readQuestions(const json& list) {
         if (!list.is_array())
-            fail(lineOfKey({}, "questions"), "/questions", "expected a list of multiple-choice questions");
+            fail(lineOfKey("", "questions"), "/questions", "expected a list of multiple-choice questions");
         for (std::size_t i = 0; i < list.size(); ++i) {
             const json& entry = list[i];
             const std::string pointer = "/questions/" + std::to_string(i);
