@@ -87,7 +87,7 @@ private:
 
 }  // namespace
 
-CsvTable parseCsv(std::string_view text, const std::string& file) {
+CsvTable parseCsv(std::string_view text, const std::string& file, std::size_t maxRecords) {
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     CsvTable table;
     table.file = file;
@@ -118,6 +118,10 @@ CsvTable parseCsv(std::string_view text, const std::string& file) {
         }
         CsvRecord record;
         record.line = scan.line();
+        if (table.records.size() == maxRecords)
+            throw InputError(file, record.line, "",
+                             "more than " + std::to_string(maxRecords) +
+                                 " rows; a results file holds one participant's trials (docs/errors.md, Limits)");
         record.fields = scan.record();
         if (record.fields.size() != table.header.size())
             throw InputError(file, record.line, "",

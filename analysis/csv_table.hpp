@@ -4,6 +4,8 @@
 // line ends; a UTF-8 byte-order mark (Excel's) is skipped. Blank lines are skipped. Lines that
 // start with '#' before the header are comments (signstim's synthetic files say SYNTHETIC
 // there). Every record keeps the line it starts on, for messages naming file:line:column.
+#include "common/input_limits.hpp"
+
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -26,7 +28,8 @@ struct CsvTable {
 
 // Throws InputError naming `file` and the line: an unterminated quote, text after a closing
 // quote, a record with more or fewer fields than the header, a duplicate or empty column
-// name, no header.
-CsvTable parseCsv(std::string_view text, const std::string& file);
+// name, no header, more than `maxRecords` records (refused at the first record too many, before
+// the rest is read: docs/errors.md, Limits).
+CsvTable parseCsv(std::string_view text, const std::string& file, std::size_t maxRecords = limits::kResultRows);
 
 }  // namespace signstim::analysis

@@ -2,6 +2,7 @@
 
 #include "analysis/csv_table.hpp"
 #include "common/error.hpp"
+#include "common/input_limits.hpp"
 #include "common/sha256.hpp"
 #include "stimuli/json_source.hpp"
 #include "stimuli/study/study.hpp"
@@ -414,7 +415,7 @@ ParticipantResults parseResults(std::string_view text, const std::string& file, 
 
 ParticipantResults readResults(const fs::path& file, const StudyListing& study, const ColumnMap& columns,
                                std::vector<std::string>& warnings) {
-    const std::string text = stimuli::readTextFile(file);
+    const std::string text = stimuli::readTextFile(file, limits::kCsvFileBytes);
     return parseResults(text, file.string(), study, columns, warnings);
 }
 

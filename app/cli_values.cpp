@@ -162,3 +162,40 @@ signer::GalleryView parseGalleryView(const std::string& text) {
 }
 
 }  // namespace signstim::app
+
+namespace signstim::app {
+
+std::pair<std::size_t, std::size_t> parseArrayTaskShard(const char* id, const char* count, const char* minimum) {
+    if (!id || !count) return {0, 1};
+    // The value as it may be quoted in a message: short, and no control character from the
+    // environment reaches the terminal.
+    const auto quoted = [](const char* value) {
+        std::string text;
+        for (const char* c = value; *c && text.size() < 40; ++c)
+            text += static_cast<unsigned char>(*c) < 0x20 || *c == 0x7F ? '?' : *c;
+        return "'" + text + "'";
+    };
+    const auto number = [&](const char* variable, const char* value) {
+        std::uint32_t parsed = 0;
+        if (!toUnsigned(value, parsed))
+            throw InputError(kEnvironment, 0, variable,
+                             std::string("expected a whole number (as Slurm sets it for an array job), got ") + quoted(value) +
+                                 "; unset it or give --shard I/N");
+        return parsed;
+    };
+    const std::uint32_t task = number("SLURM_ARRAY_TASK_ID", id);
+    const std::uint32_t tasks = number("SLURM_ARRAY_TASK_COUNT", count);
+    const std::uint32_t first = minimum ? number("SLURM_ARRAY_TASK_MIN", minimum) : 0;
+    // The same bound as --shard's N (study_runner.cpp, parseShard).
+    if (tasks == 0 || tasks > 100000)
+        throw InputError(kEnvironment, 0, "SLURM_ARRAY_TASK_COUNT",
+                         "expected 1 to 100000 array tasks, got " + quoted(count) + "; give --shard I/N");
+    if (task < first || task - first >= tasks)
+        throw InputError(kEnvironment, 0, "SLURM_ARRAY_TASK_ID",
+                         std::string("task ") + id + " of " + count + " (min " + (minimum ? minimum : "0") +
+                             ") is not a shard: expected SLURM_ARRAY_TASK_MIN <= ID < MIN + COUNT (an array of consecutive "
+                             "tasks); give --shard I/N");
+    return {task - first, tasks};
+}
+
+}  // namespace signstim::app

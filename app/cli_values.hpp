@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace signstim::app {
@@ -56,6 +57,14 @@ std::uint32_t requireSampleCount(std::uint32_t count, const std::string& flag);
 // ("mm" -> "expected 100 to 300 mm, got 350").
 double requireInRange(double value, double minimum, double maximum, const std::string& flag,
                       const std::string& unit = "");
+
+// The shard {I, N} of a Slurm array task, from the values of SLURM_ARRAY_TASK_ID,
+// SLURM_ARRAY_TASK_COUNT and SLURM_ARRAY_TASK_MIN (null: unset; MIN defaults to 0): I = ID - MIN,
+// N = COUNT. {0, 1} when ID or COUNT is unset (not an array job). Each value must be a plain
+// decimal number (no sign, no space), N at most 100,000 and 0 <= I < N; anything else throws
+// InputError("<environment>", 0, VARIABLE, ...) (exit status 1: the environment stands for
+// --shard), never a silent shard 0.
+std::pair<std::size_t, std::size_t> parseArrayTaskShard(const char* id, const char* count, const char* minimum);
 
 // Named views of `handshapes --view`: palm, thumb, little, back, top; or "AZ,EL" in degrees.
 // Throws InputError naming --view for anything else.

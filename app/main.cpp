@@ -3,6 +3,7 @@
 #include "app/commands.hpp"
 #include "common/cleanup.hpp"
 #include "common/error.hpp"
+#include "common/standard_output.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -17,13 +18,10 @@
 namespace {
 
 // What a command printed on stdout (JSON, tables) is its result: a write that failed there
-// (disk full, /dev/full, a closed pipe) fails the run. stdio keeps unwritten bytes and an
-// error flag; flushing retries the write, so errno is the system's answer to that write.
+// (disk full, /dev/full, a closed pipe) fails the run, with the system's reason for the write
+// that failed (common/standard_output.hpp keeps it where stdio would lose it).
 int checkStandardOutput() {
-    errno = 0;
-    int error = 0;
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) error = errno != 0 ? errno : EIO;
-    if (std::fclose(stdout) != 0 && error == 0) error = errno != 0 ? errno : EIO;
+    const int error = signstim::flushStandardOutput();
     if (error == 0) return 0;
     std::fprintf(stderr, "signstim: error: cannot write to standard output: %s\n", std::strerror(error));
     return 3;
@@ -78,7 +76,7 @@ int main(int argc, char** argv) {
         return root.exit(e) == 0 ? 0 : 1;
     } catch (const InputError& e) {
         std::fprintf(stderr, "signstim: error: %s\n", e.what());
-        return e.isCommandLine() ? 1 : 2;
+        return e.isUsage() ? 1 : 2;
     } catch (const EnvironmentError& e) {
         std::fprintf(stderr, "signstim: error: %s\n", e.what());
         return 3;

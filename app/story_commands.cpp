@@ -5,6 +5,7 @@
 #include "app/commands.hpp"
 #include "stimuli/story/story_world.hpp"
 #include "common/error.hpp"
+#include "common/standard_output.hpp"
 #include "signer/clearance.hpp"
 #include "signer/timeline_clip.hpp"
 #include "stimuli/story/lexicon.hpp"
@@ -166,7 +167,7 @@ void registerStoryCommands(Commands& commands) {
             return;
         }
         if (o->json) {
-            std::fputs(formatTimelineJson(buildTimeline(story, *version, world.sources(story), timing)).c_str(), stdout);
+            writeStandardOutput(formatTimelineJson(buildTimeline(story, *version, world.sources(story), timing)));
             return;
         }
         renderStory(*o, world, story, *version);

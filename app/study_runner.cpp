@@ -181,17 +181,8 @@ std::pair<std::size_t, std::size_t> parseShard(const std::string& text) {
 }
 
 std::pair<std::size_t, std::size_t> shardFromEnvironment() {
-    const char* id = std::getenv("SLURM_ARRAY_TASK_ID");
-    const char* count = std::getenv("SLURM_ARRAY_TASK_COUNT");
-    if (!id || !count) return {0, 1};
-    const char* minimum = std::getenv("SLURM_ARRAY_TASK_MIN");
-    const long long first = minimum ? std::atoll(minimum) : 0;
-    const long long task = std::atoll(id), tasks = std::atoll(count);
-    if (tasks <= 0 || task - first < 0 || task - first >= tasks)
-        throw InputError("<environment>", 0, "SLURM_ARRAY_TASK_ID",
-                         std::string("task ") + id + " of " + count + " (min " + (minimum ? minimum : "0") +
-                             ") is not a shard; give --shard I/N");
-    return {static_cast<std::size_t>(task - first), static_cast<std::size_t>(tasks)};
+    return parseArrayTaskShard(std::getenv("SLURM_ARRAY_TASK_ID"), std::getenv("SLURM_ARRAY_TASK_COUNT"),
+                               std::getenv("SLURM_ARRAY_TASK_MIN"));
 }
 
 void checkStudy(const StudyRunOptions& options) {

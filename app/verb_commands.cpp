@@ -6,6 +6,7 @@
 #include "signer/verb_render.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/standard_output.hpp"
 #include "stimuli/verbs/corpus.hpp"
 #include "stimuli/verbs/evaluation.hpp"
 #include "stimuli/verbs/reference_performer.hpp"
@@ -175,7 +176,7 @@ void registerVerbCommands(Commands& commands) {
             const VerbSources sources{&verbs, &models, scenesDir / "animator", &handshapes};
             const VerbPerformance performance = synthesizeVerb(sources, definition.name, *version, o->subject, o->object);
             if (!o->outPath.empty()) renderVerb(*o, scenesDir, performance);
-            else if (o->json) std::fputs(formatPerformanceJson(performance).c_str(), stdout);
+            else if (o->json) writeStandardOutput(formatPerformanceJson(performance));
             else printSummary(performance);
         });
     }
@@ -195,7 +196,7 @@ void registerVerbCommands(Commands& commands) {
             const VerbLibrary verbs = verbLibrary(*o);
             const Corpus corpus = loadCorpus(o->corpusFile, verbs);
             for (const std::string& warning : corpus.warnings) std::fprintf(stderr, "signstim: warning: %s\n", warning.c_str());
-            std::fputs(formatEvaluationTable(evaluateVerbModels(corpus, verbs)).c_str(), stdout);
+            writeStandardOutput(formatEvaluationTable(evaluateVerbModels(corpus, verbs)));
         });
     }
     // ---- reference-corpus -------------------------------------------------------------------

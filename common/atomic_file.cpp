@@ -237,13 +237,24 @@ void writeNewFile(const fs::path& path, std::string_view bytes, const fs::path& 
 }
 
 TemporaryFile::TemporaryFile(fs::path target) : target_(std::move(target)) {
+    struct stat info {};
+    if (::stat(target_.c_str(), &info) == 0 && S_ISCHR(info.st_mode)) {
+        descriptor_ = ::open(target_.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+        if (descriptor_ < 0) {
+            const int error = errno;
+            throw IoError(target_.string(), kCannotWrite, error);
+        }
+        temporary_ = target_;
+        direct_ = true;
+        return;
+    }
     temporary_ = createTemporary(target_, target_, [&](const fs::path& path) { return openNewFile(path, descriptor_); });
 }
 
 TemporaryFile::~TemporaryFile() {
     if (committed_) return;
     if (descriptor_ >= 0) ::close(descriptor_);
-    removeRegistered(temporary_);
+    if (!direct_) removeRegistered(temporary_);
 }
 
 void TemporaryFile::write(std::string_view bytes) {
@@ -255,6 +266,10 @@ void TemporaryFile::commit() {
     const int descriptor = descriptor_;
     descriptor_ = -1;
     if (const int error = closeChecked(descriptor); error != 0) throw IoError(target_.string(), kCannotWrite, error);
+    if (direct_) {
+        committed_ = true;
+        return;
+    }
     CleanupLock lock;
     if (std::rename(temporary_.c_str(), target_.c_str()) != 0) {
         const int error = errno;

@@ -60,6 +60,9 @@ void checkOutputWritable(const std::filesystem::path& target);
 // A temporary file beside `target`, created empty (O_EXCL) and registered for removal on a
 // signal. Removed when destroyed without commit(). Write it with write(), or let another
 // program write it (ffmpeg), then commit().
+// A target that is a character device (/dev/null, /dev/full, a terminal) is written into
+// directly: renaming a file onto it would replace the device node (as root, in a container);
+// path() is then the target, and nothing can be left incomplete under a name.
 class TemporaryFile {
 public:
     explicit TemporaryFile(std::filesystem::path target);
@@ -81,6 +84,7 @@ private:
     std::filesystem::path temporary_;
     int descriptor_ = -1;
     bool committed_ = false;
+    bool direct_ = false;  // the target is a character device, written into as it is
 };
 
 // A temporary folder beside `target` (TARGET.tmp-HOST-PID-N), created and registered for removal

@@ -11,6 +11,9 @@ namespace signstim {
 // The "file" of errors about flags and arguments. An InputError naming it is a usage error:
 // exit status 1 in every command (docs/errors.md), whatever the check that found it.
 inline constexpr const char* kCommandLine = "<command line>";
+// The "file" of errors about environment variables that stand for an option (SLURM_ARRAY_TASK_ID
+// for --shard): a usage error too, exit status 1 (docs/errors.md).
+inline constexpr const char* kEnvironment = "<environment>";
 
 class InputError : public std::runtime_error {
 public:
@@ -28,6 +31,9 @@ public:
     const std::string& field() const { return field_; }
     const std::string& detail() const { return detail_; }
     bool isCommandLine() const { return file_ == kCommandLine; }
+    // A mistake in how signstim was started (flags, or the environment standing for a flag):
+    // exit status 1 rather than 2.
+    bool isUsage() const { return isCommandLine() || file_ == kEnvironment; }
 
 private:
     std::string file_;

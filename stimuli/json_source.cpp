@@ -6,7 +6,10 @@
 #include <cerrno>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstdio>
 #include <iterator>
+#include <map>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -54,9 +57,21 @@ std::string withoutExceptionPrefix(std::string what) {
     return what;
 }
 
-// Builds the json value like nlohmann's own DOM parser, and records the line of every value by
-// its JSON pointer; refuses a key that appears twice in one object.
-class LineRecordingBuilder {
+constexpr std::size_t kLineBlock = 4096;  // bytes per entry of JsonValueIndex::blockLines
+
+// nlohmann's parse errors quote the text last read, which for a file of megabytes of white
+// space is megabytes long: keep the message one readable line.
+std::string shortened(std::string message) {
+    constexpr std::size_t kMaximum = 300;
+    if (message.size() > kMaximum) message = message.substr(0, kMaximum) + "...'";
+    return message;
+}
+
+// Builds the json value like nlohmann's own DOM parser and records where every value starts
+// (JsonValueIndex); refuses a key that appears twice in one object, nesting deeper than
+// limits::kJsonDepth and control characters in strings and keys. The parser itself keeps one
+// bit per open container, so nothing here recurses or grows faster than the text.
+class IndexingBuilder {
 public:
     using number_integer_t = json::number_integer_t;
     using number_unsigned_t = json::number_unsigned_t;
@@ -64,18 +79,18 @@ public:
     using string_t = json::string_t;
     using binary_t = json::binary_t;
 
-    LineRecordingBuilder(JsonSource& source, const char** furthest)
-        : source_(source), begin_(source.text.data()), furthest_(furthest) {
-        for (std::size_t i = 0; i < source.text.size(); ++i)
-            if (source.text[i] == '\n') newlines_.push_back(i);
-    }
+    IndexingBuilder(JsonSource& source, const char** furthest)
+        : source_(source), index_(source.index), begin_(source.text.data()), furthest_(furthest) {}
 
     bool null() { return add(json(nullptr)); }
     bool boolean(bool value) { return add(json(value)); }
     bool number_integer(number_integer_t value) { return add(json(value)); }
     bool number_unsigned(number_unsigned_t value) { return add(json(value)); }
     bool number_float(number_float_t value, const string_t&) { return add(json(value)); }
-    bool string(string_t& value) { return add(json(std::move(value))); }
+    bool string(string_t& value) {
+        checkText(value, pointerOfNext(), "text");
+        return add(json(std::move(value)));
+    }
     bool binary(binary_t& value) { return add(json(std::move(value))); }
     bool start_object(std::size_t) { return open(json::object()); }
     bool start_array(std::size_t) { return open(json::array()); }
@@ -84,20 +99,24 @@ public:
 
     bool key(string_t& name) {
         Frame& frame = stack_.back();
-        const int line = lineOfLastToken();
-        const auto [existing, inserted] = frame.keyLines.emplace(name, line);
+        const std::size_t at = lastTokenOffset();
         const std::string pointer = frame.pointer + "/" + jsonPointerToken(name);
+        checkText(name, frame.pointer, "key");
+        const std::uint32_t value = static_cast<std::uint32_t>(index_.offset.size());
+        const auto [existing, inserted] = frame.members.emplace(name, value);
         if (!inserted)
-            throw InputError(source_.file, line, pointer,
-                             "duplicate key '" + name + "' (first on line " + std::to_string(existing->second) +
+            throw InputError(source_.file, source_.lineOfOffset(at), pointer,
+                             "duplicate key '" + name + "' (first on line " +
+                                 std::to_string(source_.lineOfOffset(index_.offset[existing->second])) +
                                  "; a JSON object may give each key once)");
         frame.pendingKey = name;
-        source_.lines[pointer] = line;
+        // The member's value is the next value recorded; its place is its key's.
+        keyOffset_ = at;
         return true;
     }
 
     bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& error) {
-        const int line = lineOfOffset(std::min(position, source_.text.size()));
+        const int line = source_.lineOfOffset(stepBackOverSpace(std::min(position, source_.text.size())));
         std::string field;
         if (!stack_.empty()) {
             const Frame& frame = stack_.back();
@@ -105,7 +124,7 @@ public:
                         ? frame.pointer + "/" + jsonPointerToken(frame.pendingKey)
                         : frame.pointer;
         }
-        std::string message = "not valid JSON: " + withoutExceptionPrefix(error.what());
+        std::string message = "not valid JSON: " + shortened(withoutExceptionPrefix(error.what()));
         if (error.id == 406) message += " (numbers must fit a double: at most about 1.8e308 in size)";
         throw InputError(source_.file, line, field, message);
     }
@@ -113,60 +132,92 @@ public:
 private:
     struct Frame {
         json* container = nullptr;
+        std::uint32_t value = 0;  // the container's number in JsonValueIndex
         std::string pointer;
-        std::map<std::string, int> keyLines;
+        std::map<std::string, std::uint32_t> members;  // objects: key -> value number
+        std::vector<std::uint32_t> elements;           // arrays: value numbers in order
         std::string pendingKey;
     };
 
-    // Line of the last token read: the parser may have read one character past a number, so
-    // step back over white space to the token's last character.
-    int lineOfLastToken() const { return lineOfOffset(static_cast<std::size_t>(*furthest_ - begin_)); }
-    int lineOfOffset(std::size_t consumed) const {
+    // The offset of the last character of the last token read: the parser may have read one
+    // character past a number, so step back over white space to the token's last character.
+    std::size_t lastTokenOffset() const { return stepBackOverSpace(static_cast<std::size_t>(*furthest_ - begin_)); }
+    std::size_t stepBackOverSpace(std::size_t consumed) const {
         while (consumed > 0 && std::string_view(" \t\r\n").find(source_.text[consumed - 1]) != std::string_view::npos)
             --consumed;
-        const std::size_t last = consumed == 0 ? 0 : consumed - 1;
-        return 1 + static_cast<int>(std::lower_bound(newlines_.begin(), newlines_.end(), last) - newlines_.begin());
+        return consumed == 0 ? 0 : consumed - 1;
     }
 
-    // Where the next value goes, its pointer, and records its line (array elements and the
-    // root; an object member has its key's line).
-    std::pair<json*, std::string> place(json&& value) {
+    std::string pointerOfNext() const {
+        if (stack_.empty()) return "";
+        const Frame& frame = stack_.back();
+        if (frame.container->is_object()) return frame.pointer + "/" + jsonPointerToken(frame.pendingKey);
+        return frame.pointer + "/" + std::to_string(frame.container->size());
+    }
+
+    void checkText(const std::string& text, const std::string& pointer, const char* what) const {
+        const std::size_t at = findControlCharacter(text);
+        if (at == std::string::npos) return;
+        throw InputError(source_.file, source_.lineOfOffset(lastTokenOffset()), pointer,
+                         std::string("a ") + what + " holds the control character " + describeControlCharacter(text[at]) +
+                             " at byte " + std::to_string(at + 1) +
+                             " (only tab and line break are allowed; remove the invisible character)");
+    }
+
+    // Puts the next value in place, records where it starts, and returns it with its number.
+    std::pair<json*, std::uint32_t> place(json&& value) {
+        const auto number = static_cast<std::uint32_t>(index_.offset.size());
         if (stack_.empty()) {
             source_.root = std::move(value);
-            source_.lines[""] = lineOfLastToken();
-            return {&source_.root, ""};
+            index_.offset.push_back(static_cast<std::uint32_t>(lastTokenOffset()));
+            index_.firstChild.push_back(0);
+            return {&source_.root, number};
         }
         Frame& frame = stack_.back();
+        json* slot = nullptr;
         if (frame.container->is_object()) {
-            const std::string pointer = frame.pointer + "/" + jsonPointerToken(frame.pendingKey);
-            json& slot = (*frame.container)[frame.pendingKey];
-            slot = std::move(value);
+            slot = &(*frame.container)[frame.pendingKey];
+            *slot = std::move(value);
             frame.pendingKey.clear();
-            return {&slot, pointer};
+            index_.offset.push_back(static_cast<std::uint32_t>(keyOffset_));
+        } else {
+            frame.container->push_back(std::move(value));
+            slot = &frame.container->back();
+            frame.elements.push_back(number);
+            index_.offset.push_back(static_cast<std::uint32_t>(lastTokenOffset()));
         }
-        const std::string pointer = frame.pointer + "/" + std::to_string(frame.container->size());
-        frame.container->push_back(std::move(value));
-        source_.lines[pointer] = lineOfLastToken();
-        return {&frame.container->back(), pointer};
+        index_.firstChild.push_back(0);
+        return {slot, number};
     }
     bool add(json&& value) {
         place(std::move(value));
         return true;
     }
     bool open(json&& container) {
-        auto [slot, pointer] = place(std::move(container));
-        stack_.push_back({slot, pointer, {}, {}});
+        if (stack_.size() >= limits::kJsonDepth)
+            throw InputError(source_.file, source_.lineOfOffset(lastTokenOffset()), pointerOfNext(),
+                             "arrays and objects nested more than " + std::to_string(limits::kJsonDepth) +
+                                 " deep (docs/errors.md, Limits: no signstim file needs more than 6)");
+        const std::string pointer = pointerOfNext();
+        const auto [slot, number] = place(std::move(container));
+        stack_.push_back({slot, number, pointer, {}, {}, {}});
         return true;
     }
     bool close() {
+        Frame& frame = stack_.back();
+        index_.firstChild[frame.value] = static_cast<std::uint32_t>(index_.children.size());
+        // An object's values in the order of its keys, which is nlohmann's (std::map) order.
+        for (const auto& member : frame.members) index_.children.push_back(member.second);
+        index_.children.insert(index_.children.end(), frame.elements.begin(), frame.elements.end());
         stack_.pop_back();
         return true;
     }
 
     JsonSource& source_;
+    JsonValueIndex& index_;
     const char* begin_;
     const char** furthest_;
-    std::vector<std::size_t> newlines_;
+    std::size_t keyOffset_ = 0;
     std::vector<Frame> stack_;
 };
 
@@ -246,19 +297,85 @@ int JsonSource::lineOf(const std::vector<std::string>& anchors) const {
     return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(found), '\n'));
 }
 
-int JsonSource::lineAt(const std::string& pointer) const {
-    std::string at = pointer;
-    while (true) {
-        if (const auto it = lines.find(at); it != lines.end()) return it->second;
-        if (at.empty()) return 0;
-        at.erase(at.rfind('/') == std::string::npos ? 0 : at.rfind('/'));
+namespace {
+
+// The value numbers along `pointer` from the root, as far as the document has them.
+std::vector<std::uint32_t> valuesAlong(const JsonSource& source, const std::string& pointer, bool& complete) {
+    const JsonValueIndex& index = source.index;
+    std::vector<std::uint32_t> path;
+    complete = false;
+    if (index.empty()) return path;
+    path.push_back(0);
+    const json* node = &source.root;
+    std::size_t at = 0;
+    while (at < pointer.size()) {
+        if (pointer[at] != '/') return path;
+        const std::size_t end = std::min(pointer.find('/', at + 1), pointer.size());
+        std::string token;
+        for (std::size_t i = at + 1; i < end; ++i) {
+            if (pointer[i] == '~' && i + 1 < end && (pointer[i + 1] == '0' || pointer[i + 1] == '1')) {
+                token += pointer[++i] == '0' ? '~' : '/';
+            } else {
+                token += pointer[i];
+            }
+        }
+        at = end;
+        std::size_t rank = 0;
+        const json* child = nullptr;
+        if (node->is_object()) {
+            const auto it = node->find(token);
+            if (it == node->end()) return path;
+            rank = static_cast<std::size_t>(std::distance(node->begin(), it));
+            child = &*it;
+        } else if (node->is_array()) {
+            if (token.empty() || token.size() > 9 || token.find_first_not_of("0123456789") != std::string::npos) return path;
+            rank = std::stoul(token);
+            if (rank >= node->size()) return path;
+            child = &(*node)[rank];
+        } else {
+            return path;
+        }
+        // A reader that added members after parsing (operator[] on a missing key) shifts the
+        // order: the enclosing value's line is then the best known.
+        const std::size_t slot = index.firstChild[path.back()] + rank;
+        if (slot >= index.children.size()) return path;
+        path.push_back(index.children[slot]);
+        node = child;
     }
+    complete = true;
+    return path;
+}
+
+}  // namespace
+
+int JsonSource::lineOfOffset(std::size_t offset) const {
+    if (text.empty()) return 1;
+    offset = std::min(offset, text.size() - 1);
+    const std::size_t block = offset / kLineBlock;
+    const std::size_t before = block < index.blockLines.size()
+                                   ? index.blockLines[block]
+                                   : static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(block * kLineBlock), '\n'));
+    const auto first = text.begin() + static_cast<std::ptrdiff_t>(block * kLineBlock);
+    return 1 + static_cast<int>(before) + static_cast<int>(std::count(first, text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
+}
+
+int JsonSource::lineAt(const std::string& pointer) const {
+    bool complete = false;
+    const std::vector<std::uint32_t> path = valuesAlong(*this, pointer, complete);
+    if (path.empty()) return 0;
+    return lineOfOffset(index.offset[path.back()]);
+}
+
+bool JsonSource::has(const std::string& pointer) const {
+    bool complete = false;
+    valuesAlong(*this, pointer, complete);
+    return complete;
 }
 
 void JsonSource::fail(const std::vector<std::string>& anchors, const std::string& field,
                       const std::string& message) const {
     const bool isPointer = !field.empty() && field.front() == '/';
-    const int line = isPointer && !lines.empty() ? lineAt(field) : lineOf(anchors);
+    const int line = isPointer && !index.empty() ? lineAt(field) : lineOf(anchors);
     throw InputError(file, line, field, message);
 }
 
@@ -286,7 +403,33 @@ void checkInRange(double value, const NumberRange& range, const std::string& fil
     if (!range.contains(value)) throw InputError(file, line, field, rangeMessage(range.minimum, range.maximum, range.unit, value));
 }
 
-std::string readTextFile(const std::filesystem::path& path) {
+InputError tooLargeError(const std::string& file, std::size_t bytes, std::size_t maxBytes) {
+    const auto mib = [](std::size_t n) {
+        return n % limits::kMebibyte == 0 ? std::to_string(n / limits::kMebibyte) : formatFixed(static_cast<double>(n) / limits::kMebibyte, 1);
+    };
+    return InputError(file, 0, "", "the file is " + (bytes > maxBytes + limits::kMebibyte ? mib(bytes) + " MiB" : std::to_string(bytes) + " bytes") +
+                                       ", over the limit of " + mib(maxBytes) + " MiB for this kind of input (docs/errors.md, Limits)");
+}
+
+std::size_t findControlCharacter(std::string_view text) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if ((c < 0x20 && c != '\t' && c != '\n') || c == 0x7F) return i;
+    }
+    return std::string_view::npos;
+}
+
+std::string describeControlCharacter(char c) {
+    static const char* const kNames[32] = {"NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS", "TAB", "LF",
+                                           "VT",  "FF",  "CR",  "SO",  "SI",  "DLE", "DC1", "DC2", "DC3", "DC4", "NAK",
+                                           "SYN", "ETB", "CAN", "EM",  "SUB", "ESC", "FS",  "GS",  "RS",  "US"};
+    const auto code = static_cast<unsigned char>(c);
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "U+%04X", code);
+    return std::string(hex) + " (" + (code < 32 ? kNames[code] : code == 0x7F ? "DEL" : "?") + ")";
+}
+
+std::string readTextFile(const std::filesystem::path& path, std::size_t maxBytes) {
     const std::string name = path.string();
     struct stat info {};
     if (::stat(path.c_str(), &info) != 0) {
@@ -308,6 +451,12 @@ std::string readTextFile(const std::filesystem::path& path) {
         ::close(descriptor);
         throw InputError(name, 0, "", std::string(kindOfFile(opened.st_mode)) + ", not a regular file");
     }
+    // Refused before a byte is read; the loop below also stops a file that grows meanwhile.
+    if (static_cast<std::uintmax_t>(opened.st_size) > maxBytes) {
+        ::close(descriptor);
+        throw tooLargeError(name, static_cast<std::size_t>(opened.st_size), maxBytes);
+    }
+    text.reserve(static_cast<std::size_t>(opened.st_size));
     char buffer[65536];
     while (true) {
         const ssize_t count = ::read(descriptor, buffer, sizeof buffer);
@@ -319,26 +468,53 @@ std::string readTextFile(const std::filesystem::path& path) {
         }
         if (count == 0) break;
         text.append(buffer, static_cast<std::size_t>(count));
+        if (text.size() > maxBytes) {
+            ::close(descriptor);
+            throw tooLargeError(name, text.size(), maxBytes);
+        }
     }
     ::close(descriptor);
     return text;
 }
 
-JsonSource parseJsonText(std::string text, std::string fileName) {
+JsonSource parseJsonText(std::string text, std::string fileName, std::size_t maxBytes) {
+    // Offsets are 32-bit: no limit may pass 4 GiB.
+    static_assert(limits::kJsonFileBytes < (std::size_t{1} << 32));
+    maxBytes = std::min(maxBytes, limits::kJsonFileBytes);
+    if (text.size() > maxBytes) throw tooLargeError(fileName, text.size(), maxBytes);
     JsonSource source{std::move(fileName), std::string(withoutByteOrderMark(text)), {}, {}};
+    std::vector<std::uint32_t>& blockLines = source.index.blockLines;
+    blockLines.reserve(source.text.size() / kLineBlock + 1);
+    std::uint32_t newlines = 0;
+    for (std::size_t block = 0; block < source.text.size(); block += kLineBlock) {
+        blockLines.push_back(newlines);
+        const auto first = source.text.begin() + static_cast<std::ptrdiff_t>(block);
+        newlines += static_cast<std::uint32_t>(std::count(first, first + static_cast<std::ptrdiff_t>(std::min(kLineBlock, source.text.size() - block)), '\n'));
+    }
+    std::size_t run = 0;
+    for (std::size_t i = 0; i < source.text.size(); ++i) {
+        const char c = source.text[i];
+        run = c == ' ' || c == '\t' || c == '\r' || c == '\n' ? run + 1 : 0;
+        if (run > limits::kJsonWhitespaceRun)
+            throw InputError(source.file, source.lineOfOffset(i + 1 - run), "",
+                             "more than " + std::to_string(limits::kJsonWhitespaceRun) +
+                                 " bytes of white space in a row, from this line on (docs/errors.md, Limits)");
+    }
     const char* furthest = source.text.data();
-    LineRecordingBuilder builder(source, &furthest);
+    IndexingBuilder builder(source, &furthest);
     const TrackingIterator first(source.text.data(), &furthest);
     const TrackingIterator last(source.text.data() + source.text.size(), nullptr);
     try {
         json::sax_parse(first, last, &builder);
     } catch (const nlohmann::json::exception& e) {
         // Not raised through parse_error (should not happen); still the user's file.
-        throw InputError(source.file, 0, "", "not valid JSON: " + withoutExceptionPrefix(e.what()));
+        throw InputError(source.file, 0, "", "not valid JSON: " + shortened(withoutExceptionPrefix(e.what())));
     }
     return source;
 }
 
-JsonSource readJsonFile(const std::filesystem::path& path) { return parseJsonText(readTextFile(path), path.string()); }
+JsonSource readJsonFile(const std::filesystem::path& path, std::size_t maxBytes) {
+    return parseJsonText(readTextFile(path, maxBytes), path.string(), maxBytes);
+}
 
 }  // namespace signstim::stimuli

@@ -1,5 +1,7 @@
 #include "stimuli/story/gloss.hpp"
 
+#include "common/input_limits.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -117,6 +119,10 @@ std::optional<GlossError> parseToken(std::string_view token, std::size_t offset,
         if (open != std::string_view::npos) return error(offset + open, "fingerspelling takes no parentheses");
         item.word = std::string(head.substr(3));
         if (item.word.empty()) return error(offset, "'fs-' needs letters: fs-JOHN");
+        if (item.word.size() > limits::kFingerspelledLetters)
+            return error(offset + 3 + limits::kFingerspelledLetters,
+                         std::to_string(item.word.size()) + " letters to fingerspell; at most " +
+                             std::to_string(limits::kFingerspelledLetters) + " (docs/errors.md, Limits)");
         for (std::size_t i = 0; i < item.word.size(); ++i) {
             const char c = item.word[i];
             if (isLower(c)) return error(offset + 3 + i, "fingerspelled letters are written in capitals: fs-" +

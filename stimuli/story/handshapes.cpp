@@ -100,7 +100,7 @@ private:
             if (!spelled) break;
             pointer += "/" + std::to_string(index);
         }
-        if (spelled && !pointer.empty() && source_.lines.count(pointer))
+        if (spelled && !pointer.empty() && source_.has(pointer))
             throw InputError(source_.file, source_.lineAt(pointer), field, message);
         source_.fail(anchors, field, message);
     }

@@ -66,7 +66,7 @@ public:
             LexiconSign sign;
             sign.gloss = item["gloss"].get<std::string>();
             anchors.push_back("\"gloss\": \"" + sign.gloss + "\"");
-            sign.line = source_.lineOf(anchors);
+            sign.line = source_.lineAt(pointer + "/gloss");
             const GlossParse parsed = parseGloss(sign.gloss);
             if (parsed.error || parsed.items.size() != 1 || parsed.items[0].kind != GlossItemKind::Word ||
                 parsed.items[0].hasArgumentList || sign.gloss == "IX" || sign.gloss == "HOLD")

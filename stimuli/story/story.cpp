@@ -1,9 +1,11 @@
 #include "stimuli/story/story.hpp"
 
+#include "common/input_limits.hpp"
 #include "stimuli/story/gloss.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace signstim::stimuli {
 namespace {
@@ -19,17 +21,15 @@ struct TextPosition {
     int column = 0;
 };
 
-TextPosition positionOf(const std::string& text, std::size_t offset) {
+// The line from the parser's index (JsonSource::lineOfOffset: no scan from the start, so a
+// story of many sentences costs no more than linear time); the column counted on its line.
+TextPosition positionOf(const JsonSource& source, std::size_t offset) {
+    const std::string& text = source.text;
     offset = std::min(offset, text.size());
-    TextPosition p{1, 1};
-    for (std::size_t i = 0; i < offset; ++i) {
-        if (text[i] == '\n') {
-            ++p.line;
-            p.column = 1;
-        } else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) {  // count UTF-8 characters
-            ++p.column;
-        }
-    }
+    const std::size_t lineStart = offset == 0 ? 0 : text.rfind('\n', offset - 1) + 1;  // npos + 1 == 0
+    TextPosition p{source.lineOfOffset(offset), 1};
+    for (std::size_t i = lineStart; i < offset; ++i)
+        if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) ++p.column;  // count UTF-8 characters
     return p;
 }
 
@@ -106,20 +106,20 @@ public:
     Story read() {
         const json& root = source_.root;
         if (!root.is_object()) fail(1, "", "a story file is a JSON object {\"format\": \"signstim-story\", ...}");
-        checkKnownKeys(root, {"format", "version", "title", "characters", "sentences", "questions", "notes"}, "", {});
-        const std::string format = requiredString(root, "format", "", {});
+        checkKnownKeys(root, {"format", "version", "title", "characters", "sentences", "questions", "notes"}, "");
+        const std::string format = requiredString(root, "format", "");
         if (format != "signstim-story")
-            fail(lineOfKey({}, "format"), "/format", "expected \"signstim-story\", got \"" + format + "\"");
-        const json& version = required(root, "version", "", {});
+            fail(lineOfKey("", "format"), "/format", "expected \"signstim-story\", got \"" + format + "\"");
+        const json& version = required(root, "version", "");
         if (!version.is_number_integer() || version.get<long long>() != kStoryFormatVersion)
-            fail(lineOfKey({}, "version"), "/version",
+            fail(lineOfKey("", "version"), "/version",
                  "this signstim reads story files of version " + std::to_string(kStoryFormatVersion) + ", got " +
                      version.dump());
         story_.file = source_.file;
-        story_.title = requiredString(root, "title", "", {});
-        if (root.contains("notes")) story_.notes = requiredString(root, "notes", "", {});
-        readCharacters(required(root, "characters", "", {}));
-        readSentences(required(root, "sentences", "", {}));
+        story_.title = requiredString(root, "title", "");
+        if (root.contains("notes")) story_.notes = requiredString(root, "notes", "");
+        readCharacters(required(root, "characters", ""));
+        readSentences(required(root, "sentences", ""));
         // A story for phase 1 has questions (the study requires them); the sentences of phase 2
         // are a story without any.
         if (root.contains("questions")) readQuestions(root["questions"]);
@@ -131,27 +131,23 @@ private:
         throw InputError(source_.file, line, column, field, message);
     }
 
-    int lineOfKey(const std::vector<std::string>& anchors, const std::string& key) const {
-        std::vector<std::string> at = anchors;
-        at.push_back("\"" + key + "\"");
-        return source_.lineOf(at);
+    // The line of member `key` of the object at `pointer`, from the parser's index.
+    int lineOfKey(const std::string& pointer, const std::string& key) const {
+        return source_.lineAt(pointer + "/" + jsonPointerToken(key));
     }
 
-    const json& required(const json& object, const std::string& key, const std::string& pointer,
-                         const std::vector<std::string>& anchors) const {
-        if (!object.contains(key)) fail(source_.lineOf(anchors), pointer + "/" + key, "missing field '" + key + "'");
+    const json& required(const json& object, const std::string& key, const std::string& pointer) const {
+        if (!object.contains(key)) fail(source_.lineAt(pointer), pointer + "/" + key, "missing field '" + key + "'");
         return object[key];
     }
 
-    std::string requiredString(const json& object, const std::string& key, const std::string& pointer,
-                               const std::vector<std::string>& anchors) const {
-        const json& value = required(object, key, pointer, anchors);
-        if (!value.is_string()) fail(lineOfKey(anchors, key), pointer + "/" + key, "expected text in quotes");
+    std::string requiredString(const json& object, const std::string& key, const std::string& pointer) const {
+        const json& value = required(object, key, pointer);
+        if (!value.is_string()) fail(lineOfKey(pointer, key), pointer + "/" + key, "expected text in quotes");
         return value.get<std::string>();
     }
 
-    void checkKnownKeys(const json& object, std::initializer_list<const char*> known, const std::string& pointer,
-                        const std::vector<std::string>& anchors) const {
+    void checkKnownKeys(const json& object, std::initializer_list<const char*> known, const std::string& pointer) const {
         for (const auto& [key, value] : object.items()) {
             bool found = false;
             std::string list;
@@ -160,19 +156,22 @@ private:
                 list += (list.empty() ? "" : ", ") + std::string(k);
             }
             if (!found)
-                fail(lineOfKey(anchors, key), pointer + "/" + key, "unknown field '" + key + "' (known: " + list + ")");
+                fail(lineOfKey(pointer, key), pointer + "/" + key, "unknown field '" + key + "' (known: " + list + ")");
         }
     }
 
     // Line of element `index` of the top-level array `key`, from its offset in the text.
+    // The offsets of each array are found once (a scan of the text), not once per element.
     TextPosition elementPosition(const std::string& key, std::size_t index) const {
-        const std::vector<std::size_t> offsets = topLevelArrayElements(source_.text, key);
-        if (index < offsets.size()) return positionOf(source_.text, offsets[index]);
-        return {source_.lineOf({"\"" + key + "\""}), 0};
+        auto found = elementOffsets_.find(key);
+        if (found == elementOffsets_.end()) found = elementOffsets_.emplace(key, topLevelArrayElements(source_.text, key)).first;
+        const std::vector<std::size_t>& offsets = found->second;
+        if (index < offsets.size()) return positionOf(source_, offsets[index]);
+        return {lineOfKey("", key), 0};
     }
 
     void readCharacters(const json& list) {
-        const int listLine = lineOfKey({}, "characters");
+        const int listLine = lineOfKey("", "characters");
         if (!list.is_array() || list.size() < 2 || list.size() > 6)
             fail(listLine, "/characters", "expected 2 to 6 characters, each {\"gloss\": \"JOHN\", \"position\": 0.9}");
         for (std::size_t i = 0; i < list.size(); ++i) {
@@ -253,6 +252,11 @@ private:
 
     void requireSpellable(const std::string& letters, int line, int column, const std::string& field) const {
         if (letters.empty()) fail(line, field, "nothing to fingerspell", column);
+        if (letters.size() > limits::kFingerspelledLetters)
+            fail(line, field,
+                 std::to_string(letters.size()) + " letters to fingerspell; at most " +
+                     std::to_string(limits::kFingerspelledLetters) + " (docs/errors.md, Limits)",
+                 column);
         for (std::size_t i = 0; i < letters.size(); ++i) {
             const char c = letters[i];
             if (c < 'A' || c > 'Z')
@@ -274,7 +278,12 @@ private:
 
     void readSentences(const json& list) {
         if (!list.is_array() || list.empty())
-            fail(lineOfKey({}, "sentences"), "/sentences", "expected a list of sentences in gloss, e.g. \"JOHN IX(0.9) ASK MARY IX(-0.6)\"");
+            fail(lineOfKey("", "sentences"), "/sentences", "expected a list of sentences in gloss, e.g. \"JOHN IX(0.9) ASK MARY IX(-0.6)\"");
+        // Refused before any sentence is checked (each costs a synthesis in four versions).
+        if (list.size() > limits::kStorySentences)
+            fail(lineOfKey("", "sentences"), "/sentences",
+                 std::to_string(list.size()) + " sentences; a story has at most " + std::to_string(limits::kStorySentences) +
+                     " (docs/errors.md, Limits): split it into several stories");
         placed_.assign(story_.characters.size(), false);
         for (std::size_t i = 0; i < list.size(); ++i) {
             const TextPosition where = elementPosition("sentences", i);
@@ -295,6 +304,11 @@ private:
         const GlossParse parsed = parseGloss(gloss);
         auto column = [&](int withinSentence) { return firstColumn + withinSentence - 1; };
         if (parsed.error) fail(line, field, parsed.error->message, column(parsed.error->column));
+        if (parsed.items.size() > limits::kSentenceSigns)
+            fail(line, field,
+                 std::to_string(parsed.items.size()) + " signs in one sentence; at most " +
+                     std::to_string(limits::kSentenceSigns) + " (docs/errors.md, Limits): split the sentence",
+                 column(parsed.items[limits::kSentenceSigns].column));
 
         std::vector<std::size_t> verbItems;
         for (const GlossItem& written : parsed.items) {
@@ -481,7 +495,7 @@ private:
 
     void readQuestions(const json& list) {
         if (!list.is_array())
-            fail(lineOfKey({}, "questions"), "/questions", "expected a list of multiple-choice questions");
+            fail(lineOfKey("", "questions"), "/questions", "expected a list of multiple-choice questions");
         for (std::size_t i = 0; i < list.size(); ++i) {
             const json& entry = list[i];
             const std::string pointer = "/questions/" + std::to_string(i);
@@ -538,6 +552,7 @@ private:
     const StoryVocabulary& vocabulary_;
     Story story_;
     std::vector<bool> placed_;
+    mutable std::map<std::string, std::vector<std::size_t>> elementOffsets_;  // elementPosition's cache
 };
 
 }  // namespace
@@ -555,7 +570,7 @@ Story parseStory(const JsonSource& source, const StoryVocabulary& vocabulary) {
 }
 
 Story loadStory(const std::filesystem::path& file, const StoryVocabulary& vocabulary) {
-    return parseStory(readJsonFile(file), vocabulary);
+    return parseStory(readJsonFile(file, limits::kStoryFileBytes), vocabulary);
 }
 
 }  // namespace signstim::stimuli

@@ -375,7 +375,7 @@ TrainedVerbModels parseVerbModels(const JsonSource& source, const VerbLibrary& v
         model.verb = v["verb"].get<std::string>();
         model.sourceLine = source.lineAt(reader.pointer);
         reader.anchors.push_back("\"" + model.verb + "\"");
-        const VerbDefinition& verb = verbs.get(model.verb, source.file, source.lineOf(reader.anchors), reader.pointer + "/verb");
+        const VerbDefinition& verb = verbs.get(model.verb, source.file, source.lineAt(reader.pointer + "/verb"), reader.pointer + "/verb");
         const int degree = reader.at(v, "degree", "").is_number_integer() ? v["degree"].get<int>() : -1;
         if (degree < 0 || degree > 3) reader.fail("/degree", "expected 0..3");
         model.basis = PolynomialBasis{verb.inflection, degree};

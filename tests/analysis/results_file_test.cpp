@@ -5,6 +5,7 @@
 #include "analysis/results_file.hpp"
 #include "analysis/simulation.hpp"
 #include "common/error.hpp"
+#include "common/input_limits.hpp"
 #include "stimuli/json_source.hpp"
 #include "tests/stimuli/review_page_fixture.hpp"
 
@@ -20,6 +21,8 @@ namespace {
 
 using namespace signstim::analysis;
 using signstim::InputError;
+namespace fs = std::filesystem;
+namespace limits = signstim::limits;
 using signstim::stimuli::StudyListing;
 
 const StudyListing& study() {
@@ -160,6 +163,37 @@ TEST(ResultsFile, DuplicateStoriesMissingColumnsAndEmptyFilesAreRefused) {
     rows[4] += ",extra";
     EXPECT_NE(errorOf(joined(rows)).find("results/P01.csv:5: this row has 26 fields, the header 25"), std::string::npos)
         << errorOf(joined(rows));
+}
+
+// Bounded input (docs/errors.md, Limits): a file of more rows than one participant could have
+// is refused at the first row too many, before the rest is read or checked.
+TEST(ResultsFile, AFileOverTheRowLimitIsRefusedAtTheFirstRowTooMany) {
+    std::vector<std::string> rows = lines(participantFile());
+    const std::string row = rows[2];
+    const std::size_t have = rows.size() - 2;  // comment line, header
+    rows.reserve(2 + limits::kResultRows + 1);
+    for (std::size_t i = have; i <= limits::kResultRows; ++i) rows.push_back(row);
+    const std::string error = errorOf(joined(rows));
+    const std::string line = std::to_string(2 + limits::kResultRows + 1);  // the comment, the header, then rows
+    EXPECT_NE(error.find("results/P01.csv:" + line + ": more than 100000 rows"), std::string::npos) << error.substr(0, 300);
+}
+
+TEST(ResultsFile, AResultsFileOverItsSizeIsRefusedBeforeItIsRead) {
+    const fs::path path = fs::temp_directory_path() / "signstim_results_too_large.csv";
+    {
+        std::ofstream out(path, std::ios::binary);
+        out << participantFile();
+        out.seekp(static_cast<std::streamoff>(limits::kCsvFileBytes));  // sparse: costs no disk
+        out << '\n';
+    }
+    std::vector<std::string> warnings;
+    try {
+        readResults(path, study(), {}, warnings);
+        ADD_FAILURE() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(e.detail().find("over the limit of 64 MiB"), std::string::npos) << e.what();
+    }
+    fs::remove(path);
 }
 
 TEST(ResultsFile, ScoringThatDisagreesWithTheAnswerKeyIsAWarningAndTheKeyWins) {

@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace signstim::app {
 namespace {
@@ -137,6 +138,37 @@ TEST(CliValues, RangeIsInclusiveAndRefusesNaN) {
     // Past the 6th digit: the message shows why (it printed 1 before).
     expectRefused([] { requireInRange(1.0000001, 0.0, 1.0, "--subject"); }, "--subject", "expected 0 to 1, got '1.0000001'");
     EXPECT_THROW(requireInRange(std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0, "--x"), InputError);
+}
+
+TEST(SlurmArrayTask, UnsetVariablesMeanOneShard) {
+    EXPECT_EQ(parseArrayTaskShard(nullptr, nullptr, nullptr), (std::pair<std::size_t, std::size_t>{0, 1}));
+    EXPECT_EQ(parseArrayTaskShard("3", nullptr, nullptr), (std::pair<std::size_t, std::size_t>{0, 1}));
+}
+
+TEST(SlurmArrayTask, TheShardIsTheTaskLessTheMinimumOfTheCount) {
+    EXPECT_EQ(parseArrayTaskShard("3", "8", nullptr), (std::pair<std::size_t, std::size_t>{3, 8}));
+    EXPECT_EQ(parseArrayTaskShard("8", "8", "1"), (std::pair<std::size_t, std::size_t>{7, 8}));
+}
+
+TEST(SlurmArrayTask, AValueThatIsNotANumberIsRefusedNotShardZero) {
+    for (const char* id : {"x", "", " 1", "1 ", "+1", "-1", "1.0", "0x1", "99999999999"}) {
+        const InputError e = refusal([&] { parseArrayTaskShard(id, "2", nullptr); });
+        EXPECT_EQ(e.file(), "<environment>") << id;
+        EXPECT_TRUE(e.isUsage()) << id;  // exit status 1, like --shard
+        EXPECT_EQ(e.field(), "SLURM_ARRAY_TASK_ID") << id;
+        EXPECT_NE(e.detail().find("expected a whole number"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(refusal([] { parseArrayTaskShard("0", "two", nullptr); }).field(), "SLURM_ARRAY_TASK_COUNT");
+    EXPECT_EQ(refusal([] { parseArrayTaskShard("0", "2", "x"); }).field(), "SLURM_ARRAY_TASK_MIN");
+    // A control character from the environment is not echoed to the terminal.
+    EXPECT_EQ(refusal([] { parseArrayTaskShard("\x1b[2J", "2", nullptr); }).detail().find('\x1b'), std::string::npos);
+}
+
+TEST(SlurmArrayTask, ATaskOutsideTheArrayOrAnEmptyArrayIsRefused) {
+    EXPECT_EQ(refusal([] { parseArrayTaskShard("2", "2", nullptr); }).field(), "SLURM_ARRAY_TASK_ID");
+    EXPECT_EQ(refusal([] { parseArrayTaskShard("0", "2", "1"); }).field(), "SLURM_ARRAY_TASK_ID");
+    EXPECT_EQ(refusal([] { parseArrayTaskShard("0", "0", nullptr); }).field(), "SLURM_ARRAY_TASK_COUNT");
+    EXPECT_EQ(refusal([] { parseArrayTaskShard("0", "100001", nullptr); }).field(), "SLURM_ARRAY_TASK_COUNT");
 }
 
 }  // namespace

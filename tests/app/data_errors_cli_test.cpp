@@ -150,4 +150,43 @@ TEST(DataErrorsCli, AHugeSensorSampleExitsTwoAndWritesNothing) {
     fs::remove_all(dir);
 }
 
+// ---- bounded input (issue 25 §10; docs/errors.md, Limits) ----------------------------------
+
+TEST(DataErrorsCli, AHundredThousandLevelsOfNestingExitTwoAtOnce) {
+    const fs::path dir = scratchDir("deep");
+    std::ofstream(dir / "deep.json") << std::string(100000, '[') << std::string(100000, ']');  // synthetic
+    const auto start = std::chrono::steady_clock::now();
+    const CommandResult r = runSignstim("hand shapes --shapes " + shellQuote((dir / "deep.json").string()));
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 20.0);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("deep.json:1: field '/0/0/0"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("nested more than 64 deep"), std::string::npos) << r.output;
+    fs::remove_all(dir);
+}
+
+TEST(DataErrorsCli, ANulInAStoryTitleExitsTwoNamingLineAndField) {
+    const fs::path dir = scratchDir("nul");
+    const std::string text = replaced(readFile(kScenes / "stories" / "story-01.json"), "\"title\": \"The copied homework\"",
+                                      "\"title\": \"The copied\\u0000 homework\"");
+    std::ofstream(dir / "story.json") << text;
+    const CommandResult r = runSignstim("story " + shellQuote((dir / "story.json").string()) + " --check");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("story.json:" + std::to_string(lineOfText(text, "\"title\"")) + ": field '/title': "),
+              std::string::npos)
+        << r.output;
+    // The whole message reaches the terminal: no NUL cuts it short.
+    EXPECT_NE(r.output.find("U+0000 (NUL)"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("remove the invisible character"), std::string::npos) << r.output;
+    fs::remove_all(dir);
+}
+
+TEST(DataErrorsCli, ASlurmTaskIdThatIsNotANumberExitsOneInsteadOfShardZero) {
+    const CommandResult r = runSignstim("study " + shellQuote((kScenes / "studies" / "default.json").string()) + " --check",
+                                        Capture::StdoutAndStderr, "SLURM_ARRAY_TASK_ID=x SLURM_ARRAY_TASK_COUNT=2");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("signstim: error: <environment>: field 'SLURM_ARRAY_TASK_ID': expected a whole number"),
+              std::string::npos)
+        << r.output;
+}
+
 }  // namespace

@@ -300,8 +300,12 @@ TEST(FullDisk, Mp4IsAnErrorNamingTheFileAndLeavesNothing) {
 // ---- 2. stdout that cannot be written ------------------------------------------------------
 
 TEST(StandardOutput, DevFullIsAnError) {
-    for (const std::string command : {"hand pose --shape A --json",
-                                      "verb ASK --subject 0.9 --object -0.6 --version point --json"}) {
+    // The story's timeline (44 KB) is larger than stdio's buffer: its failed write used to be
+    // reported as "Input/output error" (issue 25 §10); common/standard_output keeps the reason.
+    const std::string story = "story " + shellQuote(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/stories/story-01.json") +
+                              " --version point --json";
+    for (const std::string command : {std::string("hand pose --shape A --json"),
+                                      std::string("verb ASK --subject 0.9 --object -0.6 --version point --json"), story}) {
         // The braces: stdout goes to /dev/full, stderr to the capture.
         const CommandResult r = runShell("{ " + signstimCommand() + " " + command + " > /dev/full; }");
         EXPECT_EQ(r.status, 3) << command << "\n" << r.output;

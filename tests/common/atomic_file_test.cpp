@@ -7,6 +7,12 @@
 #include <fstream>
 #include <sstream>
 
+#include <cerrno>
+#include <cstring>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
+
 namespace fs = std::filesystem;
 using namespace signstim;
 
@@ -157,4 +163,31 @@ TEST(AtomicFile, TrailingSeparatorIsIgnored) {
     EXPECT_EQ(readAll(dir / "out" / "new.txt"), "new");
     EXPECT_FALSE(fs::exists(dir / "out" / "old.txt"));
     EXPECT_EQ(fileCount(dir), 1u);
+}
+
+// A character device as the target (/dev/full, /dev/null) is written into: the system's
+// reason for a failed write is the message, and the device node is never replaced by a
+// renamed file (as root, /dev is writable). Root writes to a device node made in a scratch
+// folder (mknod: the same device as /dev/full), so a regression cannot replace /dev/full.
+TEST(AtomicFile, ACharacterDeviceTargetIsWrittenDirectlyAndAFullOneSaysNoSpace) {
+    const fs::path dir = freshDir("chardev");
+    fs::create_directories(dir);
+    fs::path full = "/dev/full";
+    if (::geteuid() == 0) {
+        full = dir / "full";
+        ASSERT_EQ(::mknod(full.c_str(), S_IFCHR | 0666, makedev(1, 7)), 0) << std::strerror(errno);
+    }
+    try {
+        writeFileAtomic(full, std::string(100000, 'x'));
+        ADD_FAILURE() << "no IoError";
+    } catch (const IoError& e) {
+        EXPECT_EQ(std::string(e.what()), full.string() + ": cannot write: No space left on device");
+    }
+    struct stat info {};
+    ASSERT_EQ(::stat(full.c_str(), &info), 0);
+    EXPECT_TRUE(S_ISCHR(info.st_mode)) << full << " is no longer a device";
+    if (full.parent_path() == dir) {
+        EXPECT_EQ(fileCount(dir), 1u);  // no temporary beside it
+    }
+    fs::remove_all(dir);
 }
