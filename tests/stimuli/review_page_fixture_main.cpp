@@ -8,12 +8,20 @@
 //   --case wrong-duration  one clip listed 0.5 s longer than its file: the check must fail naming it
 //   --case broken-video    one clip's bytes are not a video: the check must fail naming it
 //   --case console-error   a script error added to the page: the check must fail on the console
+//   --experiment           also the study's documents (conditions, Gorilla sheets, overview.csv),
+//                          the jsPsych experiment (third_party/jspsych) and manifest.json, and the
+//                          checker is tests/browser/run_experiment.py (at 1366x768, the screen
+//                          the rating page must fit), given --screenshots DIR for its pictures
 //
 // For the failing cases this program exits 0 only when the checker exits 1 and says what was
 // expected, so a checker that crashes, or fails for another reason, fails the test. Exit 77
 // (a CTest skip, never a pass) when ffmpeg, the Python or the browser is missing.
 #include "common/atomic_file.hpp"
+#include "stimuli/study/jspsych_bundle.hpp"
 #include "stimuli/study/review_page.hpp"
+#include "stimuli/study/study.hpp"
+#include "stimuli/study/study_documents.hpp"
+#include "stimuli/study/study_exports.hpp"
 #include "tests/stimuli/review_page_fixture.hpp"
 
 #include <spawn.h>
@@ -48,6 +56,8 @@ struct Options {
     bool small = false;
     std::string python, checker, screenshot;
     bool fullPage = false;
+    bool experiment = false;
+    std::string screenshots;
 };
 
 struct RunResult {
@@ -209,6 +219,19 @@ int writeAndCheck(const Options& options) {
     if (options.testCase == "console-error")
         page.insert(page.rfind("</body>"), "<script>reviewPageFixtureUndefined();</script>\n");
     signstim::writeFileAtomic(options.out / "index.html", page);
+    signstim::writeFileAtomic(options.out / "overview.csv", overviewCsv(listing));  // the page links it
+    if (options.experiment) {
+        std::vector<StudyDocument> documents = studyDocuments(listing);
+        for (StudyDocument& document : experimentDocuments(listing, loadJspsychBundle())) documents.push_back(std::move(document));
+        for (const StudyDocument& document : documents) {
+            if (document.path == "index.html") continue;
+            fs::create_directories((options.out / document.path).parent_path());
+            signstim::writeFileAtomic(options.out / document.path, document.contents);
+        }
+        nlohmann::json manifest = nlohmann::json::object();
+        manifest["study"] = listingToJson(listing);
+        signstim::writeFileAtomic(options.out / "manifest.json", manifest.dump(1) + "\n");
+    }
     if (options.testCase == "missing-video") fs::remove(options.out / "clips/story-02_version-vector.mp4");
     if (options.testCase == "broken-video")
         signstim::writeFileAtomic(options.out / "clips/story-01_version-point.mp4", "this is not an MP4 file\n");
@@ -222,7 +245,13 @@ int writeAndCheck(const Options& options) {
         return skipped;
     }
     std::vector<std::string> argv = {options.python, options.checker, options.out.string()};
-    if (!options.screenshot.empty()) {
+    if (options.experiment) {
+        for (const char* a : {"--width", "1366", "--height", "768"}) argv.push_back(a);
+        if (!options.screenshots.empty()) {
+            argv.push_back("--screenshots");
+            argv.push_back(options.screenshots);
+        }
+    } else if (!options.screenshot.empty()) {
         argv.push_back("--screenshot");
         argv.push_back(options.screenshot);
         if (options.fullPage) argv.push_back("--full-page");
@@ -248,8 +277,9 @@ int writeAndCheck(const Options& options) {
 
 int usage() {
     std::cerr << "usage: signstim_review_page_fixture --out DIR [--case pass|missing-video|wrong-duration|"
-                 "broken-video|console-error] [--small]\n"
-                 "         [--python PYTHON --checker check_review_page.py [--screenshot FILE.png [--full-page]]]\n";
+                 "broken-video|console-error] [--small] [--experiment]\n"
+                 "         [--python PYTHON --checker check_review_page.py [--screenshot FILE.png [--full-page]]]\n"
+                 "         [--experiment --python PYTHON --checker run_experiment.py [--screenshots DIR]]\n";
     return 2;
 }
 
@@ -263,6 +293,8 @@ int main(int argc, char** argv) {
         const char* v = nullptr;
         if (arg == "--small") options.small = true;
         else if (arg == "--full-page") options.fullPage = true;
+        else if (arg == "--experiment") options.experiment = true;
+        else if (arg == "--screenshots" && (v = value())) options.screenshots = v;
         else if (arg == "--out" && (v = value())) options.out = v;
         else if (arg == "--case" && (v = value())) options.testCase = v;
         else if (arg == "--python" && (v = value())) options.python = v;
