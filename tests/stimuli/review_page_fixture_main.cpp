@@ -8,6 +8,8 @@
 //   --case wrong-duration  one clip listed 0.5 s longer than its file: the check must fail naming it
 //   --case broken-video    one clip's bytes are not a video: the check must fail naming it
 //   --case console-error   a script error added to the page: the check must fail on the console
+//   --documents-only       only the study's documents (conditions, Gorilla sheets, overview.csv,
+//                          sheets; no media, no browser): for check_conditions_for_psychopy.py
 //   --experiment           also the study's documents (conditions, Gorilla sheets, overview.csv),
 //                          the jsPsych experiment (third_party/jspsych) and manifest.json, and the
 //                          checker is tests/browser/run_experiment.py (at 1366x768, the screen
@@ -57,6 +59,7 @@ struct Options {
     std::string python, checker, screenshot;
     bool fullPage = false;
     bool experiment = false;
+    bool documentsOnly = false;
     std::string screenshots;
 };
 
@@ -182,7 +185,28 @@ std::vector<std::string> expectedComplaints(const std::string& testCase) {
     return {};
 }
 
+// The documents alone (conditions, Gorilla sheets, overview, sheets), as the study runner
+// writes them: no ffmpeg, no browser.
+int writeDocuments(const Options& options) {
+    if (fs::exists(options.out) && !fs::exists(options.out / marker)) {
+        std::cerr << "review_page_fixture: " << options.out.string() << " exists and is not a fixture folder\n";
+        return 1;
+    }
+    fs::remove_all(options.out);
+    fs::create_directories(options.out);
+    signstim::writeFileAtomic(options.out / marker, "written by signstim_review_page_fixture\n");
+    testing::ReviewFixtureShape shape;
+    if (options.small) shape = {.stories = 4, .participants = 4, .likertSentences = 4};
+    for (const StudyDocument& document : studyDocuments(testing::reviewFixtureListing(shape))) {
+        fs::create_directories((options.out / document.path).parent_path());
+        signstim::writeFileAtomic(options.out / document.path, document.contents);
+    }
+    std::cout << "review_page_fixture: wrote the study documents in " << options.out.string() << "\n";
+    return 0;
+}
+
 int writeAndCheck(const Options& options) {
+    if (options.documentsOnly) return writeDocuments(options);
     if (run({"ffmpeg", "-version"}, false).status != 0) {
         loudSkip("ffmpeg is not installed (apt-get install ffmpeg); it makes the fixture's MP4s");
         return skipped;
@@ -277,7 +301,7 @@ int writeAndCheck(const Options& options) {
 
 int usage() {
     std::cerr << "usage: signstim_review_page_fixture --out DIR [--case pass|missing-video|wrong-duration|"
-                 "broken-video|console-error] [--small] [--experiment]\n"
+                 "broken-video|console-error] [--small] [--experiment | --documents-only]\n"
                  "         [--python PYTHON --checker check_review_page.py [--screenshot FILE.png [--full-page]]]\n"
                  "         [--experiment --python PYTHON --checker run_experiment.py [--screenshots DIR]]\n";
     return 2;
@@ -294,6 +318,7 @@ int main(int argc, char** argv) {
         if (arg == "--small") options.small = true;
         else if (arg == "--full-page") options.fullPage = true;
         else if (arg == "--experiment") options.experiment = true;
+        else if (arg == "--documents-only") options.documentsOnly = true;
         else if (arg == "--screenshots" && (v = value())) options.screenshots = v;
         else if (arg == "--out" && (v = value())) options.out = v;
         else if (arg == "--case" && (v = value())) options.testCase = v;
