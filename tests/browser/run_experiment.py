@@ -9,13 +9,19 @@ the packages chromium, chromium-driver and python3-selenium. Standard library + 
 
 The first participant's session runs from disk (file://), the second's from a static web
 server on 127.0.0.1 (the study folder served by Python's http.server), so both ways the
-experiment is meant to run are exercised, the preload of the videos included.
+experiment is meant to run are exercised, the preload of the videos included. The second is
+addressed by its bare number (?participant=2 for P02), as an experimenter may type it.
 
-The responder, deterministic: on each text page it presses the button; on a story's video it
+The responder, deterministic: on each text page it presses the button; on the background form
+(the study's session.background, from participants/index.js) it picks an option per question;
+on a story's video it
 checks there are no controls and nothing to respond with, then seeks to the end; on the
 questions it answers some right and some wrong (a rule of participant, trial and question);
 on a rating page it checks the video has controls and that Continue waits for the video's end,
-seeks to the end, and gives each panel a different rating. The saved file
+seeks to the end, and gives each panel a different rating; there it also checks that the
+video, the question, every panel's row and Continue are inside the window without scrolling
+(run with --width 1366 --height 768 for the laptop screen the page is laid out for), that the
+question is the study's rating prompt, and that the page's labels are at least 16 px. The saved file
 (signstim-results_PNN.csv, captured through Chromium's download folder) must then have:
   - exactly the documented header and CRLF line ends, one row per trial, phase 1 then phase 2;
   - the stories, versions, sentences and panel codes of the participant's schedule, in order,
@@ -24,9 +30,11 @@ seeks to the end, and gives each panel a different rating. The saved file
     n_correct; each panel's rating, and the ratings unmapped to versions through the panel
     code's letters (P V A U = point vector animator uninflected), computed here independently;
   - empty cells where a column does not apply, and a whole-number rt_ms;
+  - the background answers on every row (bg_hearing, bg_asl_age, bg_asl_school, bg_daily_use);
 and the browser log no SEVERE entry (console errors, failed loads). Finally the checker is
 shown to fail: copies of the first saved CSV with a swapped rating, a flipped correct flag,
-two trials swapped, a row missing and a renamed column must each be rejected.
+two trials swapped, a row missing, an emptied background answer and a renamed column must each
+be rejected.
 
 Exit status: 0 pass; 1 a check failed (each failure listed); 77 Chromium, its driver or
 selenium is missing or the browser cannot start (a skip for CTest, never a pass); 2 bad usage.
