@@ -329,8 +329,10 @@ private:
         }
         out_ += "</tbody></table>\n<p class=\"note\">Participants whose trial at that position shows that version";
         if (divides)
-            out_ += "; " + std::to_string(even) + " everywhere when balanced. Here: " + std::to_string(low) + " to " +
-                    std::to_string(high) + (low == high ? " (balanced)" : " (cells off " + std::to_string(even) + " marked)");
+            out_ += "; " + std::to_string(even) + " everywhere when balanced. Here: " +
+                    (low == high ? std::to_string(low) + " everywhere (balanced)"
+                                 : std::to_string(low) + " to " + std::to_string(high) + " (cells off " +
+                                       std::to_string(even) + " marked)");
         out_ += ". The study file's <code>\"order\": \"balanced\"</code> evens them over every complete block of "
                 "participants (docs/study.md).</p>\n</div>\n";
     }
