@@ -122,7 +122,8 @@ document.querySelectorAll('table.signstim-ratings tbody tr').forEach((row, i) =>
 const out = {viewport: [window.innerWidth, window.innerHeight], scrollY: window.scrollY, parts: {}, fonts: {}};
 for (const [name, e] of Object.entries(parts)) out.parts[name] = e ? rect(e) : null;
 const labelled = document.querySelectorAll(
-  '.signstim-rating-question, table.signstim-ratings th, table.signstim-ratings .signstim-anchor, .signstim-step, .signstim-note');
+  '.signstim-rating-question, table.signstim-ratings th, table.signstim-ratings .signstim-anchor, .signstim-step, ' +
+  '.signstim-note, #jspsych-progressbar-container span');
 for (const e of labelled) {
   const size = parseFloat(getComputedStyle(e).fontSize);
   const name = e.className || e.tagName.toLowerCase();
