@@ -1,5 +1,6 @@
 #include "stimuli/study/review_page.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <set>
 #include <stdexcept>
@@ -28,140 +29,13 @@ std::string encodeUrlPath(std::string_view path) {
     return out;
 }
 
+// review_page.css and review_page.js, embedded at build time (stimuli/CMakeLists.txt).
+namespace embedded {
+extern const std::string_view reviewStyleSheet;
+extern const std::string_view reviewScript;
+}  // namespace embedded
+
 namespace {
-
-// The page's stylesheet: system fonts, quiet greys, one accent; printable (print opens every
-// section through the script below and drops the navigation).
-constexpr std::string_view styleSheet = R"css(
-:root { --ink: #1f2328; --muted: #5b6470; --line: #d9dee4; --soft: #f5f7f9; --accent: #0b5cad; --ok: #1a7f37; }
-* { box-sizing: border-box; }
-html { font-family: system-ui, -apple-system, "Segoe UI", Roboto, "Noto Sans", "Helvetica Neue", Arial, sans-serif;
-  font-size: 15px; line-height: 1.5; color: var(--ink); background: #fff; }
-body { margin: 0 auto; max-width: 1240px; padding: 2rem 2rem 4rem; }
-h1 { font-size: 1.75rem; font-weight: 600; margin: 0 0 .25rem; }
-h2 { font-size: 1.3rem; font-weight: 600; margin: 3rem 0 1rem; padding-bottom: .35rem; border-bottom: 1px solid var(--line); }
-h3 { font-size: 1.1rem; font-weight: 600; margin: 1.75rem 0 .5rem; }
-h4 { font-size: .95rem; font-weight: 600; margin: 1.25rem 0 .5rem; color: var(--muted); }
-p { margin: .4rem 0; }
-a { color: var(--accent); text-decoration: none; }
-a:hover { text-decoration: underline; }
-code, .gloss { font-family: ui-monospace, "SFMono-Regular", "DejaVu Sans Mono", Menlo, Consolas, monospace; font-size: .9em; }
-.muted, .note { color: var(--muted); }
-.note { max-width: 75ch; }
-.lede { color: var(--muted); max-width: 75ch; margin-bottom: 1.25rem; }
-dl.facts { display: grid; grid-template-columns: max-content 1fr; gap: .25rem 1.5rem; margin: 0; }
-dl.facts dt { color: var(--muted); }
-dl.facts dd { margin: 0; overflow-wrap: anywhere; }
-nav.toc { margin-top: 2rem; padding: 1rem 1.25rem; background: var(--soft); border: 1px solid var(--line); border-radius: 6px; }
-nav.toc h2 { margin: 0 0 .5rem; padding: 0; border: 0; font-size: 1.05rem; }
-nav.toc > ol { margin: 0; padding-left: 1.25rem; }
-nav.toc > ol > li { margin: .35rem 0; }
-ul.links { list-style: none; margin: .25rem 0 0; padding: 0; display: flex; flex-wrap: wrap; gap: .15rem .9rem; }
-ul.links.wide { display: block; columns: 2 22rem; }
-table { border-collapse: collapse; width: 100%; }
-th, td { text-align: left; vertical-align: top; padding: .65rem .75rem; border-bottom: 1px solid var(--line); }
-thead th { font-size: .8rem; font-weight: 600; color: var(--muted); background: var(--soft); text-transform: uppercase; letter-spacing: .03em; }
-td.num { width: 2.5rem; text-align: right; color: var(--muted); font-variant-numeric: tabular-nums; }
-figure { margin: 0; }
-figcaption { font-size: .8rem; color: var(--muted); margin-top: .3rem; font-variant-numeric: tabular-nums; }
-video { display: block; width: 320px; max-width: 100%; height: auto; background: #111; border-radius: 4px; }
-video.quad { width: 480px; }
-.badge { display: inline-block; min-width: 1.7em; padding: 0 .4em; border-radius: 3px; font-size: .8em; font-weight: 600;
-  text-align: center; color: #fff; background: var(--version, #5b6470); }
-.v0 { --version: #2f6690; } .v1 { --version: #7a4f96; } .v2 { --version: #2e7d4f; } .v3 { --version: #9a5b16; } .v4 { --version: #8d3b4a; }
-.version-name { margin-left: .35em; }
-ol.questions { margin: 0; padding-left: 1.4rem; display: grid; grid-template-columns: repeat(auto-fill, minmax(16rem, 1fr));
-  gap: .9rem 2.25rem; }
-ol.questions p { margin: 0; }
-table.trials td.story { width: 11rem; }
-table.trials td.story .version { margin-top: .4rem; white-space: nowrap; }
-table.trials td.clip { width: calc(272px + 1.5rem); }
-table.trials td.clip.quad { width: calc(400px + 1.5rem); }
-table.trials video { width: 272px; max-width: none; }
-table.trials video.quad { width: 400px; }
-ol.choices { margin: .15rem 0 0; padding-left: 1.6rem; }
-ol.choices li.answer { font-weight: 600; }
-.key { margin-left: .5em; padding: 0 .35em; border: 1px solid var(--ok); border-radius: 3px; color: var(--ok);
-  font-size: .72rem; font-weight: 600; white-space: nowrap; }
-.probe { font-size: .8rem; color: var(--muted); }
-.toolbar { margin: .5rem 0 1rem; display: flex; gap: .5rem; }
-.toolbar button { font: inherit; font-size: .85rem; padding: .25rem .75rem; color: var(--ink); background: #fff;
-  border: 1px solid var(--line); border-radius: 4px; cursor: pointer; }
-.toolbar button:hover { background: var(--soft); }
-details.participant { border: 1px solid var(--line); border-radius: 6px; margin: .5rem 0; }
-details.participant > summary { cursor: pointer; padding: .55rem 1rem; background: var(--soft); border-radius: 6px; }
-details.participant[open] > summary { border-bottom: 1px solid var(--line); border-radius: 6px 6px 0 0; }
-details.participant > summary .pid { font-weight: 600; margin-right: .75rem; }
-details.participant > .body { padding: .25rem 1.25rem 1.25rem; overflow-x: auto; }
-.strip { display: flex; flex-wrap: wrap; gap: .6rem; margin: .75rem 0 .5rem; padding: 0; list-style: none; }
-.strip li { width: 112px; font-size: .75rem; color: var(--muted); line-height: 1.3; }
-.strip img { display: block; width: 112px; height: auto; margin-bottom: .2rem; border-radius: 3px; background: var(--soft); }
-section.story, section.sentence { margin-top: 2rem; padding-top: .25rem; border-top: 1px solid var(--line); }
-section.story h3, section.sentence h3 { margin-top: .75rem; }
-.versions { display: grid; grid-template-columns: repeat(auto-fill, minmax(270px, 1fr)); gap: 1rem 1.25rem; }
-.versions video { width: 100%; }
-.versions figcaption { font-size: .85rem; color: var(--ink); }
-ol.sentences { margin: 0; padding-left: 1.6rem; }
-ol.sentences li { margin: .1rem 0; }
-.sentence-body { display: flex; flex-wrap: wrap; gap: 1.25rem 2rem; align-items: flex-start; }
-table.mapping { width: auto; }
-table.mapping th, table.mapping td { padding: .2rem .9rem .2rem 0; border: 0; background: none; }
-footer { margin-top: 4rem; padding-top: 1rem; border-top: 1px solid var(--line); font-size: .85rem; color: var(--muted); }
-@media print {
-  html { font-size: 10.5pt; }
-  body { max-width: none; padding: 0; }
-  nav.toc, .toolbar { display: none; }
-  a { color: inherit; }
-  details.participant { border: 0; }
-  details.participant > summary { background: none; padding: 0; font-size: 1.1rem; list-style: none; }
-  details.participant > summary::-webkit-details-marker { display: none; }
-  details.participant > .body { padding: 0; }
-  details.participant { break-before: page; }
-  tr, figure, section.sentence { break-inside: avoid; }
-  video, table.trials video { width: 200px; }
-  video.quad, table.trials video.quad { width: 300px; }
-  table.trials td.clip, table.trials td.clip.quad { width: auto; }
-  video::-webkit-media-controls { display: none !important; }
-}
-)css";
-
-// Open every collapsed section while printing (and close them again); pause a section's videos
-// when it is closed; let one video play at a time; expand or collapse all participants.
-constexpr std::string_view script = R"js(
-(function () {
-  'use strict';
-  var openedForPrint = [];
-  window.addEventListener('beforeprint', function () {
-    document.querySelectorAll('details:not([open])').forEach(function (d) { d.open = true; openedForPrint.push(d); });
-  });
-  window.addEventListener('afterprint', function () {
-    openedForPrint.forEach(function (d) { d.open = false; });
-    openedForPrint = [];
-  });
-  document.addEventListener('toggle', function (event) {
-    var d = event.target;
-    if (d.tagName === 'DETAILS' && !d.open) d.querySelectorAll('video').forEach(function (v) { v.pause(); });
-  }, true);
-  document.addEventListener('play', function (event) {
-    document.querySelectorAll('video').forEach(function (v) { if (v !== event.target) v.pause(); });
-  }, true);
-  document.querySelectorAll('[data-participants]').forEach(function (button) {
-    button.addEventListener('click', function () {
-      var open = button.getAttribute('data-participants') === 'open';
-      document.querySelectorAll('details.participant').forEach(function (d) { d.open = open; });
-    });
-  });
-  // A link to a trial or participant inside a collapsed section opens it.
-  function openTarget() {
-    var id = decodeURIComponent(location.hash.slice(1));
-    var target = id && document.getElementById(id);
-    for (var node = target; node; node = node.parentElement) if (node.tagName === 'DETAILS') node.open = true;
-    if (target) target.scrollIntoView();
-  }
-  window.addEventListener('hashchange', openTarget);
-  openTarget();
-})();
-)js";
 
 std::string seconds3(double seconds) {
     char buffer[64];
@@ -226,9 +100,10 @@ public:
         out_ += "<meta name=\"generator\" content=\"signstim " + escapeHtml(listing_.toolVersion) + "\">\n";
         out_ += "<title>" + escapeHtml(listing_.title) + " \u2014 review</title>\n";
         out_ += "<style>";
-        out_ += styleSheet;
+        out_ += embedded::reviewStyleSheet;
         out_ += "</style>\n</head>\n<body>\n";
         header();
+        counterbalancing();
         contents();
         out_ += "<main>\n";
         participants();
@@ -240,7 +115,7 @@ public:
                 "</code>. A static page: it needs no server or network, and its links are relative to the "
                 "study's output folder, so it works wherever the folder is moved.</footer>\n";
         out_ += "<script>";
-        out_ += script;
+        out_ += embedded::reviewScript;
         out_ += "</script>\n</body>\n</html>\n";
         return std::move(out_);
     }
@@ -381,8 +256,91 @@ private:
         out_ += "</dl>\n</header>\n";
     }
 
+    // The counterbalancing at a glance: the design's Latin square (story x group -> version, the
+    // content of overview.csv, linked), how many participants each group has, and how often each
+    // version sits at each phase-1 trial position across the participants (a random order leaves
+    // these uneven; order "balanced" evens them over every complete block, study_design.hpp).
+    void counterbalancing() {
+        const StudyListing& l = listing_;
+        const std::size_t versions = l.versions.size();
+        out_ += "<section id=\"counterbalancing\" class=\"counterbalancing\">\n<h2>Counterbalancing</h2>\n";
+        out_ += "<div class=\"grid\">\n<div>\n<h3>Version of each story in each group</h3>\n";
+        if (l.groupVersion.empty() || l.groupVersion.front().empty()) {
+            out_ += "<p class=\"muted\">no group table in this listing</p>\n";
+        } else {
+            const std::size_t groups = l.groupVersion.front().size();
+            std::vector<std::size_t> members(groups, 0);
+            for (const ListedParticipant& p : l.participants)
+                if (p.group < groups) ++members[p.group];
+            out_ += "<table class=\"square\"><thead><tr><th class=\"story\">Story</th>";
+            for (std::size_t g = 0; g < groups; ++g)
+                out_ += "<th>Group " + std::to_string(g + 1) + "<br><span class=\"muted\">" +
+                        std::to_string(members[g]) + (members[g] == 1 ? " participant" : " participants") +
+                        "</span></th>";
+            out_ += "</tr></thead><tbody>\n";
+            for (std::size_t s = 0; s < l.groupVersion.size() && s < l.stories.size(); ++s) {
+                out_ += "<tr><td class=\"story\"><a href=\"#" + storyAnchor_[s] + "\">" + escapeHtml(l.stories[s].id) +
+                        "</a></td>";
+                for (std::size_t g = 0; g < groups; ++g) {
+                    const std::size_t v = l.groupVersion[s][g];
+                    out_ += "<td>" + (v < versions ? versionBadge(v, false) : std::string("?")) + "</td>";
+                }
+                out_ += "</tr>\n";
+            }
+            out_ += "</tbody></table>\n";
+        }
+        out_ += "<p class=\"note\">The same table as a file: <a href=\"overview.csv\">overview.csv</a> "
+                "(story &times; group &rarr; version).</p>\n</div>\n";
+        positionCounts();
+        out_ += "</div>\n</section>\n";
+    }
+
+    void positionCounts() {
+        const StudyListing& l = listing_;
+        const std::size_t versions = l.versions.size();
+        std::size_t positions = 0;
+        for (const ListedParticipant& p : l.participants) positions = std::max(positions, p.phase1.size());
+        out_ += "<div>\n<h3>Versions by phase-1 trial position</h3>\n";
+        if (positions == 0 || versions == 0) {
+            out_ += "<p class=\"muted\">no phase-1 trials</p>\n</div>\n";
+            return;
+        }
+        // count[v][i]: participants whose trial i + 1 shows version v.
+        std::vector<std::vector<std::size_t>> count(versions, std::vector<std::size_t>(positions, 0));
+        for (const ListedParticipant& p : l.participants)
+            for (std::size_t i = 0; i < p.phase1.size(); ++i) ++count[p.phase1[i].version][i];
+        // Even: participants / versions at every position (when it divides).
+        const bool divides = l.participants.size() % versions == 0;
+        const std::size_t even = l.participants.size() / versions;
+        std::size_t low = l.participants.size(), high = 0;
+        out_ += "<table class=\"positions\"><thead><tr><th>Version</th>";
+        for (std::size_t i = 0; i < positions; ++i) out_ += "<th>" + std::to_string(i + 1) + "</th>";
+        out_ += "</tr></thead><tbody>\n";
+        for (std::size_t v = 0; v < versions; ++v) {
+            out_ += "<tr><th>" + versionBadge(v) + "</th>";
+            for (std::size_t i = 0; i < positions; ++i) {
+                const std::size_t n = count[v][i];
+                low = std::min(low, n);
+                high = std::max(high, n);
+                out_ += std::string(divides ? (n == even ? "<td class=\"even\">" : "<td class=\"off\">") : "<td>") +
+                        std::to_string(n) + "</td>";
+            }
+            out_ += "</tr>\n";
+        }
+        out_ += "</tbody></table>\n<p class=\"note\">Participants whose trial at that position shows that version";
+        if (divides)
+            out_ += "; " + std::to_string(even) + " everywhere when balanced. Here: " +
+                    (low == high ? std::to_string(low) + " everywhere (balanced)"
+                                 : std::to_string(low) + " to " + std::to_string(high) + " (cells off " +
+                                       std::to_string(even) + " marked)");
+        out_ += ". The study file's <code>\"order\": \"balanced\"</code> evens them over every complete block of "
+                "participants (docs/study.md).</p>\n</div>\n";
+    }
+
     void contents() {
         out_ += "<nav class=\"toc\" aria-label=\"Contents\">\n<h2>Contents</h2>\n<ol>\n";
+        out_ += "<li><a href=\"#counterbalancing\">Counterbalancing</a> <span class=\"muted\">(story &times; group, "
+                "versions by trial position, <a href=\"overview.csv\">overview.csv</a>)</span></li>\n";
         out_ += "<li><a href=\"#participants\">Participants</a> <span class=\"muted\">(" +
                 std::to_string(listing_.participants.size()) + ")</span><ul class=\"links\">";
         for (std::size_t p = 0; p < listing_.participants.size(); ++p)

@@ -24,7 +24,7 @@ public:
         study_.file = source_.file;
         if (!root.is_object()) source_.failAt("", "a study file is a JSON object {\"format\": \"signstim-study\", ...}");
         knownKeys(root, "", {"format", "version", "title", "seed", "participants", "versions", "stories", "phase2",
-                             "likertScale", "render", "quick", "outputs", "notes"});
+                             "likertScale", "render", "quick", "outputs", "notes", "order", "session"});
         if (!root.contains("format")) source_.failAt("", "missing \"format\": \"signstim-study\"");
         source_.checkFormat("signstim-study", kStudyFormatVersion);
         if (!root.contains("version")) source_.failAt("", "missing \"version\": " + std::to_string(kStudyFormatVersion));
@@ -56,6 +56,16 @@ public:
                 study_.experiment = name;
             }
         }
+        if (root.contains("order")) {
+            const json& order = root["order"];
+            const std::string name = order.is_string() ? order.get<std::string>() : "";
+            if (name == "balanced") study_.order = StoryOrder::Balanced;
+            else if (name != "random")
+                source_.failAt("/order", "expected \"random\" (each participant's own shuffle, the default) or "
+                                         "\"balanced\" (every version equally often at every trial position, "
+                                         "a Williams-type design; docs/study.md)");
+        }
+        if (root.contains("session")) readSession(root["session"]);
         if (root.contains("notes") && !root["notes"].is_string()) source_.failAt("/notes", "expected text");
         checkDesign();
         return study_;
@@ -159,6 +169,29 @@ private:
         }
     }
 
+    void readSession(const json& session) {
+        if (!session.is_object())
+            source_.failAt("/session", "expected {\"ratingPrompt\": \"...\", \"background\": [\"hearing\", ...]}");
+        knownKeys(session, "/session", {"ratingPrompt", "background"});
+        if (session.contains("ratingPrompt")) study_.ratingPrompt = string(session, "/session", "ratingPrompt");
+        if (!session.contains("background")) return;
+        const json& list = session["background"];
+        std::string known;
+        for (std::string_view id : kBackgroundQuestions) known += (known.empty() ? "\"" : ", \"") + std::string(id) + "\"";
+        if (!list.is_array())
+            source_.failAt("/session/background", "expected a list of background questions (" + known + "), or [] for none");
+        study_.background.clear();
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string at = "/session/background/" + std::to_string(i);
+            const std::string id = list[i].is_string() ? list[i].get<std::string>() : "";
+            if (std::find(kBackgroundQuestions.begin(), kBackgroundQuestions.end(), id) == kBackgroundQuestions.end())
+                source_.failAt(at, "expected one of " + known);
+            if (std::find(study_.background.begin(), study_.background.end(), id) != study_.background.end())
+                source_.failAt(at, "\"" + id + "\" is listed twice");
+            study_.background.push_back(id);
+        }
+    }
+
     void readScale(const json& scale) {
         if (!scale.is_array() || scale.size() != 2 || !scale[0].is_number_integer() || !scale[1].is_number_integer())
             source_.failAt("/likertScale", "expected [lowest, highest], e.g. [1, 10]");
@@ -245,6 +278,7 @@ StudyDesignSpec StudyFile::designSpec() const {
     spec.participants = participants;
     spec.likertTrials = phase2Sentences.size();
     spec.seed = seed;
+    spec.order = order;
     return spec;
 }
 
@@ -292,6 +326,8 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
     listing.seed = study.seed;
     listing.likertMinimum = study.likertMinimum;
     listing.likertMaximum = study.likertMaximum;
+    listing.ratingPrompt = study.ratingPrompt;
+    listing.background = study.background;
     for (VerbVersion v : study.versions) {
         listing.versions.push_back(toString(v));
         listing.versionLetters.push_back(versionLetter(v));
@@ -473,6 +509,8 @@ json listingToJson(const StudyListing& listing) {
     j["size"] = listing.size;
     j["fps"] = listing.fps;
     j["msaa"] = listing.msaa;
+    j["ratingPrompt"] = listing.ratingPrompt;
+    j["background"] = listing.background;
     json stories = json::array();
     for (const ListedStory& s : listing.stories) {
         json questions = json::array();
@@ -519,6 +557,10 @@ StudyListing listingFromJson(const json& j, const std::string& file) {
     listing.size = r.text(j, "size", "");
     listing.fps = r.text(j, "fps", "");
     listing.msaa = static_cast<std::uint32_t>(r.count(j, "msaa", ""));
+    // Plans written before the session settings existed lack them: the defaults then.
+    listing.ratingPrompt = j.contains("ratingPrompt") ? r.text(j, "ratingPrompt", "") : std::string(kDefaultRatingPrompt);
+    if (j.contains("background")) listing.background = r.texts(j, "background", "");
+    else listing.background.assign(kBackgroundQuestions.begin(), kBackgroundQuestions.end());
     const std::size_t versions = listing.versions.size();
     const json& stories = r.list(j, "stories", "");
     for (std::size_t i = 0; i < stories.size(); ++i) {

@@ -8,7 +8,9 @@
 #include "stimuli/study/study_listing.hpp"
 #include "stimuli/verbs/verb_synthesis.hpp"
 
+#include <array>
 #include <cstdint>
+#include <string_view>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -20,6 +22,15 @@ struct Story;
 struct JsonSource;
 
 inline constexpr int kStudyFormatVersion = 1;
+
+// Huenerfauth, Lu & Kacorri 2015 §4: "Participants answered 1-to-10 Likert-scale questions
+// about the quality of the verb in each of the ... versions of the sentence".
+inline constexpr std::string_view kDefaultRatingPrompt =
+    "How would you rate the quality of the verb {verb} in each panel?";
+// The background questions experiment.js knows (docs/experiment.md): hearing status, age of
+// ASL acquisition, schooling in ASL, daily use (what Kacorri & Huenerfauth 2015 advise
+// reporting of participants; the paper's §4 reports exactly these).
+inline constexpr std::array<std::string_view, 4> kBackgroundQuestions = {"hearing", "aslAge", "aslSchool", "dailyUse"};
 
 // How clips are rendered: the study's "render" (full quality) or "quick" settings.
 struct StudyRenderSettings {
@@ -53,6 +64,12 @@ struct StudyFile {
     StudyRenderSettings render;                 // full quality
     StudyRenderSettings quick{320, 240, "15", 0, 1, 1.0};
     bool pngFrames = false;                     // also write each clip's PNG frames
+    StoryOrder order = StoryOrder::Random;      // "order": phase 1's story order (study_design.hpp)
+    // "session": what the jsPsych experiment asks (docs/experiment.md). ratingPrompt: the
+    // phase-2 question ({verb}, {minimum}, {maximum} filled in); background: the background
+    // questions asked before part 1, by id (kBackgroundQuestions), in the study's order.
+    std::string ratingPrompt = std::string(kDefaultRatingPrompt);
+    std::vector<std::string> background = {kBackgroundQuestions.begin(), kBackgroundQuestions.end()};
     std::string experiment;                     // outputs.experiment: "jspsych" (docs/experiment.md), "none", or "" (not said)
     int participantsLine = 0, storiesLine = 0, versionsLine = 0;
 

@@ -2,6 +2,7 @@
 
 #include "common/random.hpp"
 
+#include <algorithm>
 #include <numeric>
 #include <stdexcept>
 
@@ -12,6 +13,7 @@ namespace {
 constexpr std::uint64_t kGroupBlocks = 0x67726f7570ull;  // "group"
 constexpr std::uint64_t kPhase1Order = 1;
 constexpr std::uint64_t kPhase2Order = 2;
+constexpr std::uint64_t kOrderRows = 0x726f7773ull;  // "rows": the balanced order's Williams rows
 
 std::uint64_t streamSeed(std::uint64_t seed, std::uint64_t stream, std::uint64_t index) {
     return mixSeed(mixSeed(seed, stream), index);
@@ -64,12 +66,49 @@ std::vector<std::size_t> likertPanels(const StudyDesignSpec& spec, std::size_t s
     return panels;
 }
 
+std::size_t williamsRows(std::size_t versions) { return versions % 2 == 0 ? versions : 2 * versions; }
+
+std::vector<std::size_t> williamsRow(std::size_t versions, std::size_t row) {
+    // Williams (1949): the first row 0, 1, V-1, 2, V-2, ... and its cyclic shifts balance
+    // first-order carry-over for even V; odd V needs the mirror images as well.
+    std::vector<std::size_t> sequence(versions);
+    const std::size_t shift = row % versions;
+    for (std::size_t j = 0; j < versions; ++j) {
+        const std::size_t first = j % 2 == 1 ? (j + 1) / 2 : (versions - j / 2) % versions;
+        sequence[j] = (first + shift) % versions;
+    }
+    if (row >= versions) std::reverse(sequence.begin(), sequence.end());
+    return sequence;
+}
+
+namespace {
+
+// The balanced phase-1 order (header): the participant's stories of each version, shuffled,
+// dealt out along the participant's Williams row.
+std::vector<std::size_t> balancedStoryOrder(const StudyDesignSpec& spec, std::size_t participant, std::size_t group) {
+    const std::size_t rows = williamsRows(spec.versions);
+    const std::vector<std::size_t> rowOrder =
+        shuffledRange(rows, streamSeed(spec.seed, kOrderRows, participant / rows));
+    const std::vector<std::size_t> sequence = williamsRow(spec.versions, rowOrder[participant % rows]);
+    std::vector<std::vector<std::size_t>> storiesOf(spec.versions);
+    for (std::size_t story : shuffledRange(spec.stories, streamSeed(spec.seed, kPhase1Order, participant)))
+        storiesOf[phase1Version(spec, story, group)].push_back(story);
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < spec.stories; ++i) order.push_back(storiesOf[sequence[i % spec.versions]][i / spec.versions]);
+    return order;
+}
+
+}  // namespace
+
 ParticipantSchedule participantSchedule(const StudyDesignSpec& spec, std::size_t participant) {
     if (const std::string problem = designProblem(spec); !problem.empty()) throw std::invalid_argument(problem);
     ParticipantSchedule schedule;
     schedule.participant = participant;
     schedule.group = participantGroup(spec, participant);
-    for (std::size_t story : shuffledRange(spec.stories, streamSeed(spec.seed, kPhase1Order, participant)))
+    const std::vector<std::size_t> stories =
+        spec.order == StoryOrder::Balanced ? balancedStoryOrder(spec, participant, schedule.group)
+                                           : shuffledRange(spec.stories, streamSeed(spec.seed, kPhase1Order, participant));
+    for (std::size_t story : stories)
         schedule.phase1.push_back({story, phase1Version(spec, story, schedule.group)});
     for (std::size_t sentence : shuffledRange(spec.likertTrials, streamSeed(spec.seed, kPhase2Order, participant)))
         schedule.phase2.push_back({sentence, likertPanels(spec, sentence)});

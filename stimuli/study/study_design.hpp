@@ -16,11 +16,21 @@
 // square over trials: with T a multiple of V, every version sits in every panel T/V times).
 // Panels are labelled A, B, C, ... for participants; the mapping is recorded, never shown.
 // Each participant's trial order is shuffled from (seed, participant, phase 2).
+//
+// Phase-1 order (the study file's "order", docs/study.md): "random" (the default, as above)
+// or "balanced", a Williams-type design: participant p takes row r of a Williams square over
+// the V versions (rows in permuted blocks of R = V, or 2V when V is odd, like the groups), and
+// trial position i shows version row_r[i mod V]; which of the participant's stories of that
+// version comes is shuffled from (seed, participant, phase 1). Across every complete block of
+// R participants each version sits at each trial position exactly R/V times, and within the
+// first V positions each version follows each other version equally often (Williams 1949).
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace signstim::stimuli {
+
+enum class StoryOrder { Random, Balanced };
 
 struct StudyDesignSpec {
     std::size_t stories = 12;           // phase-1 stories
@@ -28,6 +38,7 @@ struct StudyDesignSpec {
     std::size_t participants = 24;
     std::size_t likertTrials = 8;       // phase-2 sentences (0: no phase 2)
     std::uint64_t seed = 1;
+    StoryOrder order = StoryOrder::Random;  // phase 1's story order (the default keeps old studies unchanged)
 };
 
 // Why a design cannot be built (empty when it can): e.g. stories not a multiple of versions,
@@ -58,6 +69,12 @@ std::size_t participantGroup(const StudyDesignSpec& spec, std::size_t participan
 // The panel arrangement of phase-2 sentence `sentence` (independent of participants: each
 // side-by-side clip is rendered once).
 std::vector<std::size_t> likertPanels(const StudyDesignSpec& spec, std::size_t sentence);
+
+// Row `row` of the Williams square over `versions` versions: a sequence of all versions
+// (rows 0..V-1: the cyclic shifts of 0, 1, V-1, 2, V-2, ...; for odd V rows V..2V-1 are
+// those reversed). Rows: williamsRows(versions).
+std::vector<std::size_t> williamsRow(std::size_t versions, std::size_t row);
+std::size_t williamsRows(std::size_t versions);
 
 // One participant's schedule. Throws std::invalid_argument when designProblem() is not empty.
 ParticipantSchedule participantSchedule(const StudyDesignSpec& spec, std::size_t participant);

@@ -17,7 +17,9 @@ std::vector<StudyDocument> studyDocuments(const stimuli::StudyListing& listing) 
         const std::string id = listing.participants[p].id;
         const std::string folder = "participants/" + id + "/";
         documents.push_back({folder + id + "_conditions.csv", "conditions", id, stimuli::conditionsCsv(listing, p),
-                             id + "'s trials in order, for PsychoPy, OpenSesame and Gorilla"});
+                             id + "'s trials in order, for PsychoPy and OpenSesame"});
+        documents.push_back({folder + id + "_gorilla.csv", "conditions", id, stimuli::gorillaSpreadsheetCsv(listing, p),
+                             id + "'s Gorilla spreadsheet: instructions, trials, break, end (docs/exports.md)"});
         documents.push_back({folder + id + "_timeline_variables.json", "jspsych", id,
                              stimuli::jspsychTimelineVariables(listing, p), id + "'s trials for jsPsych timeline_variables"});
         if (!listing.sentences.empty())

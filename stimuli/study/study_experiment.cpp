@@ -64,6 +64,9 @@ std::string participantsIndex(const StudyListing& listing) {
     nlohmann::json ids = nlohmann::json::array();
     for (const ListedParticipant& participant : listing.participants) ids.push_back(participant.id);
     study["participants"] = std::move(ids);
+    // The session's wording and background questions (study file "session", docs/experiment.md).
+    study["rating_prompt"] = listing.ratingPrompt;
+    study["background"] = listing.background;
     return scriptSetting("signstim: this study's participants, for experiment/index.html (docs/experiment.md).",
                          "signstimStudy", study.dump(2, ' ', false));
 }

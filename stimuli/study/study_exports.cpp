@@ -189,9 +189,13 @@ std::string panelColumn(std::size_t panel) { return "panel_" + lowercase(panelLa
 
 // The columns depend on the whole study (its most questions, most choices, its versions), not
 // on one participant, so every participant's file has the same header.
+// `participant_id`, not `participant`: PsychoPy's own session field is `participant`, and a
+// conditions column of the same name is overwritten by it in the saved data (both columns hold
+// the dialog's value; the issue-24 lab lost "P01" that way). Python tests
+// (tests/stimuli/check_conditions_for_psychopy.py) apply importConditions' rules to the files.
 std::vector<std::string> conditionsColumns(const StudyListing& listing) {
     std::vector<std::string> columns = {
-        "display",  "phase",       "trial",   "participant", "group",                             // every row
+        "display",  "phase",       "trial",   "participant_id", "group",                          // every row
         "story_id", "story_title", "version",                                                    // phase 1
         "sentence_id", "gloss", "verb",                                                          // phase 2
         "video_file", "video_name", "poster_file", "poster_name", "duration_s"};                 // every row
@@ -201,6 +205,7 @@ std::vector<std::string> conditionsColumns(const StudyListing& listing) {
         for (std::size_t c = 0; c < choices; ++c) columns.push_back(questionColumn(q, "choice_" + lowercase(choiceLetter(c))));
         columns.push_back(questionColumn(q, "answer"));
         columns.push_back(questionColumn(q, "answer_index"));
+        columns.push_back(questionColumn(q, "answer_text"));
     }
     for (std::size_t panel = 0; panel < listing.versions.size(); ++panel) columns.push_back(panelColumn(panel));
     columns.push_back("panel_code");
@@ -355,18 +360,56 @@ std::string escapeHtml(std::string_view text) {
     return escaped;
 }
 
-std::string conditionsCsv(const StudyListing& listing, std::size_t participantIndex) {
+namespace {
+
+// The Gorilla spreadsheet's own rows (display name, text) around the trials (docs/exports.md).
+struct GorillaText {
+    std::string display, text;
+};
+
+std::string gorillaIntro(const StudyListing& listing) {
+    return "In this study you watch short videos of an animated signer using American Sign Language (ASL). Part 1: " +
+           count(listing.stories.size()) +
+           " stories. Each story plays once, without pause or replay; after each you answer questions about it.";
+}
+
+std::string gorillaPart2(const StudyListing& listing) {
+    return "Part 2: each video shows one sentence signed " + count(listing.versions.size()) +
+           " times side by side; the panels differ only in how the verb is signed. Replay it as often as you like, "
+           "then rate the quality of the verb in each panel from " +
+           std::to_string(listing.likertMinimum) + " (very poor) to " + std::to_string(listing.likertMaximum) +
+           " (very good).";
+}
+
+// The trial rows of both files; `gorilla` adds the instruction, break and end rows and the
+// columns Gorilla's conventions name (text, ANSWER, randomise_blocks, randomise_trials).
+std::string trialTable(const StudyListing& listing, std::size_t participantIndex, bool gorilla) {
     checkStudy(listing);
     const ListedParticipant& participant = checkedParticipant(listing, participantIndex);
-    CsvTable table(conditionsColumns(listing));
+    std::vector<std::string> columns = conditionsColumns(listing);
+    if (gorilla) {
+        columns.insert(columns.begin() + 1, "text");
+        for (const char* extra : {"ANSWER", "randomise_blocks", "randomise_trials"}) columns.push_back(extra);
+    }
+    CsvTable table(std::move(columns));
+    const std::size_t questions = mostQuestions(listing);
     const auto setCommon = [&](std::string display, int phase, std::size_t trial) {
         table.addRow();
         table.set("display", std::move(display));
         table.set("phase", std::to_string(phase));
         table.set("trial", count(trial));
-        table.set("participant", participant.id);
+        table.set("participant_id", participant.id);
         table.set("group", count(participant.group + 1));
+        // Never empty: pandas (PsychoPy's importConditions) reads a column with an empty cell
+        // as floats, and 1.0 cannot index a list. -1: the row has no question N.
+        for (std::size_t q = 0; q < questions; ++q) table.set(questionColumn(q, "answer_index"), "-1");
     };
+    const auto textRow = [&](const std::string& display, const std::string& text, int phase) {
+        setCommon(display, phase, 0);
+        table.set("text", text);
+        table.set("duration_s", "0.000");
+    };
+    if (gorilla) textRow("instructions", gorillaIntro(listing), 1);
     for (const ListedPhase1Trial& trial : participant.phase1) {
         const ListedStory& story = listing.stories[trial.story];
         setCommon("story", 1, trial.trial);
@@ -381,8 +424,12 @@ std::string conditionsCsv(const StudyListing& listing, std::size_t participantIn
                 table.set(questionColumn(q, "choice_" + lowercase(choiceLetter(c))), question.choices[c]);
             table.set(questionColumn(q, "answer"), choiceLetter(static_cast<std::size_t>(question.answer)));
             table.set(questionColumn(q, "answer_index"), std::to_string(question.answer));
+            table.set(questionColumn(q, "answer_text"), question.choices[static_cast<std::size_t>(question.answer)]);
+            // Gorilla scores a response against ANSWER by the button's text.
+            if (gorilla && q == 0) table.set("ANSWER", question.choices[static_cast<std::size_t>(question.answer)]);
         }
     }
+    if (gorilla && !participant.phase2.empty()) textRow("break", gorillaPart2(listing), 2);
     for (const ListedPhase2Trial& trial : participant.phase2) {
         const ListedSentence& sentence = listing.sentences[trial.sentence];
         setCommon("likert", 2, trial.trial);
@@ -394,7 +441,18 @@ std::string conditionsCsv(const StudyListing& listing, std::size_t participantIn
             table.set(panelColumn(panel), listing.versions[sentence.panelVersion[panel]]);
         table.set("panel_code", sentence.panelCode);
     }
+    if (gorilla) textRow("end", "Thank you! You have finished. Please tell the experimenter.", participant.phase2.empty() ? 1 : 2);
     return table.text();
+}
+
+}  // namespace
+
+std::string conditionsCsv(const StudyListing& listing, std::size_t participantIndex) {
+    return trialTable(listing, participantIndex, false);
+}
+
+std::string gorillaSpreadsheetCsv(const StudyListing& listing, std::size_t participantIndex) {
+    return trialTable(listing, participantIndex, true);
 }
 
 std::string jspsychTimelineVariables(const StudyListing& listing, std::size_t participantIndex) {

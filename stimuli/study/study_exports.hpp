@@ -33,8 +33,18 @@ std::string escapeHtml(std::string_view text);
 // The conditions file of participant `participant` (index into listing.participants): a
 // header row, then one row per trial, phase 1 then phase 2, in presentation order. Every row
 // has every column (empty where it does not apply), as PsychoPy needs a rectangular table.
-// Lines end in CRLF (RFC 4180); a field may hold an LF inside its quotes.
+// Lines end in CRLF (RFC 4180); a field may hold an LF inside its quotes. Whole-number columns
+// are never empty (qN_answer_index is -1 where a row has no question N), so that pandas, and
+// with it PsychoPy's importConditions, reads them as integers; the participant's id is
+// `participant_id`, apart from PsychoPy's own `participant` field.
 std::string conditionsCsv(const StudyListing& listing, std::size_t participant);
+
+// The participant's Gorilla spreadsheet: the conditions file's columns and trials with the rows
+// Gorilla's task flow needs around them -- `instructions` first, `break` before phase 2, `end`
+// last, their wording in `text` -- and Gorilla's columns: ANSWER (question 1's correct choice as
+// text, what a button response returns; qN_answer_text for the others), randomise_blocks and
+// randomise_trials (left empty: the order is the schedule's). Text rows have trial 0.
+std::string gorillaSpreadsheetCsv(const StudyListing& listing, std::size_t participant);
 
 // jsPsych timeline variables of one participant: an object with "phase1" and "phase2"
 // arrays, each element a trial in presentation order whose fields map onto

@@ -86,6 +86,11 @@ struct StudyListing {
     std::vector<std::vector<std::size_t>> groupVersion;
     std::vector<ListedSentence> sentences;
     std::vector<ListedParticipant> participants;
+    // What the jsPsych experiment asks (study file "session", docs/experiment.md): the phase-2
+    // question ({verb}, {minimum}, {maximum} filled in by experiment.js) and the background
+    // questions asked before part 1, by id ("hearing", "aslAge", "aslSchool", "dailyUse").
+    std::string ratingPrompt;
+    std::vector<std::string> background;
     // Render settings, for the page and the sheets: "1280x720", 30 fps, MSAA 4.
     std::string size;
     std::string fps;

@@ -9,13 +9,19 @@ the packages chromium, chromium-driver and python3-selenium. Standard library + 
 
 The first participant's session runs from disk (file://), the second's from a static web
 server on 127.0.0.1 (the study folder served by Python's http.server), so both ways the
-experiment is meant to run are exercised, the preload of the videos included.
+experiment is meant to run are exercised, the preload of the videos included. The second is
+addressed by its bare number (?participant=2 for P02), as an experimenter may type it.
 
-The responder, deterministic: on each text page it presses the button; on a story's video it
+The responder, deterministic: on each text page it presses the button; on the background form
+(the study's session.background, from participants/index.js) it picks an option per question;
+on a story's video it
 checks there are no controls and nothing to respond with, then seeks to the end; on the
 questions it answers some right and some wrong (a rule of participant, trial and question);
 on a rating page it checks the video has controls and that Continue waits for the video's end,
-seeks to the end, and gives each panel a different rating. The saved file
+seeks to the end, and gives each panel a different rating; there it also checks that the
+video, the question, every panel's row and Continue are inside the window without scrolling
+(run with --width 1366 --height 768 for the laptop screen the page is laid out for), that the
+question is the study's rating prompt, and that the page's labels are at least 16 px. The saved file
 (signstim-results_PNN.csv, captured through Chromium's download folder) must then have:
   - exactly the documented header and CRLF line ends, one row per trial, phase 1 then phase 2;
   - the stories, versions, sentences and panel codes of the participant's schedule, in order,
@@ -24,9 +30,11 @@ seeks to the end, and gives each panel a different rating. The saved file
     n_correct; each panel's rating, and the ratings unmapped to versions through the panel
     code's letters (P V A U = point vector animator uninflected), computed here independently;
   - empty cells where a column does not apply, and a whole-number rt_ms;
+  - the background answers on every row (bg_hearing, bg_asl_age, bg_asl_school, bg_daily_use);
 and the browser log no SEVERE entry (console errors, failed loads). Finally the checker is
 shown to fail: copies of the first saved CSV with a swapped rating, a flipped correct flag,
-two trials swapped, a row missing and a renamed column must each be rejected.
+two trials swapped, a row missing, an emptied background answer and a renamed column must each
+be rejected.
 
 Exit status: 0 pass; 1 a check failed (each failure listed); 77 Chromium, its driver or
 selenium is missing or the browser cannot start (a skip for CTest, never a pass); 2 bad usage.
@@ -54,8 +62,12 @@ from check_review_page import INSTALL_HINT, SKIP, find_program, kill_tree  # noq
 RESULT_COLUMNS = (
     "participant,phase,trial,story_id,sentence_id,version,panel_code,"
     "q1_response,q1_correct,q2_response,q2_correct,q3_response,q3_correct,q4_response,q4_correct,n_correct,"
-    "rating_a,rating_b,rating_c,rating_d,rating_point,rating_vector,rating_animator,rating_uninflected,rt_ms"
+    "rating_a,rating_b,rating_c,rating_d,rating_point,rating_vector,rating_animator,rating_uninflected,rt_ms,"
+    "bg_hearing,bg_asl_age,bg_asl_school,bg_daily_use"
 ).split(",")
+BACKGROUND_COLUMN = {"hearing": "bg_hearing", "aslAge": "bg_asl_age", "aslSchool": "bg_asl_school",
+                     "dailyUse": "bg_daily_use"}
+MIN_LABEL_PX = 16  # issue 24 §6: the rating page's labels were 12 px
 VERSION_OF_LETTER = {"P": "point", "V": "vector", "A": "animator", "U": "uninflected"}
 LETTERS = "ABCDEFGHIJ"
 
@@ -76,6 +88,11 @@ if (questions) return {page: 'questions', seen: mark(questions),
   prompts: Array.from(document.querySelectorAll('.jspsych-survey-multi-choice-question'), (e) => ({
     name: e.dataset.name, prompt: e.querySelector('p.jspsych-survey-multi-choice-text').innerText.trim(),
     options: Array.from(e.querySelectorAll('input[type=radio]'), (i) => i.value)}))};
+const background = q('fieldset.signstim-background');
+if (background) return {page: 'background', seen: mark(q('#jspsych-survey-html-form')),
+  questions: Array.from(document.querySelectorAll('fieldset.signstim-background'), (f) => ({
+    legend: f.querySelector('legend').innerText.trim(),
+    options: Array.from(f.querySelectorAll('input[type=radio]'), (i) => [i.name, i.value, i.id])}))};
 const ratings = q('#jspsych-survey-html-form');
 if (ratings) { const v = q('#signstim-rating-video'); const next = q('#jspsych-survey-html-form-next');
   return {page: 'ratings', seen: mark(ratings), controls: v ? v.controls : null, readyState: v ? v.readyState : 0,
@@ -92,6 +109,28 @@ return {page: 'other', text: document.body ? document.body.innerText.slice(0, 30
 """
 
 MARK_JS = "arguments[0].dataset.responder = 'done';"
+# Where the rating page's parts are, at the top of the page as it opens (no scrolling): the video,
+# every panel's row, the question and Continue, each a rectangle; the viewport; the smallest font
+# among the page's labels.
+LAYOUT_JS = r"""
+window.scrollTo(0, 0);
+const rect = (e) => { const r = e.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; };
+const parts = {video: document.querySelector('#signstim-rating-video'),
+  question: document.querySelector('.signstim-rating-question'),
+  continue: document.querySelector('#jspsych-survey-html-form-next')};
+document.querySelectorAll('table.signstim-ratings tbody tr').forEach((row, i) => { parts['row ' + (i + 1)] = row; });
+const out = {viewport: [window.innerWidth, window.innerHeight], scrollY: window.scrollY, parts: {}, fonts: {}};
+for (const [name, e] of Object.entries(parts)) out.parts[name] = e ? rect(e) : null;
+const labelled = document.querySelectorAll(
+  '.signstim-rating-question, table.signstim-ratings th, table.signstim-ratings .signstim-anchor, .signstim-step, ' +
+  '.signstim-note, #jspsych-progressbar-container span');
+for (const e of labelled) {
+  const size = parseFloat(getComputedStyle(e).fontSize);
+  const name = e.className || e.tagName.toLowerCase();
+  out.fonts[name] = Math.min(out.fonts[name] || 1e9, size);
+}
+return out;
+"""
 SEEK_END_JS = r"""
 const v = arguments[0];
 v.playbackRate = 16;
@@ -129,6 +168,10 @@ class Expected:
         self.conditions = conditions
         self.answers = []   # per phase-1 trial: list of chosen 0-based option indices
         self.ratings = []   # per phase-2 trial: list of ratings, panel A first
+        self.asked = []     # the study's background question ids (participants/index.js)
+        self.background = None  # the answers given, by result column
+        self.prompt = ""    # the study's rating prompt
+        self.layout = None  # the first rating page's layout (LAYOUT_JS)
 
 
 def answer_plan(person, trial, question, correct, options):
@@ -206,6 +249,8 @@ class Session:
             elif page == "questions":
                 self.questions(state, phase1, story_index, person, expected)
                 story_index += 1
+            elif page == "background":
+                self.background(state, person, expected)
             elif page == "ratings":
                 self.ratings(state, phase2, rating_index, person, expected, over_http)
                 rating_index += 1
@@ -273,6 +318,39 @@ class Session:
         self.driver.execute_script(MARK_JS, self.element("#jspsych-survey-multi-choice_form"))
         self.element("#jspsych-survey-multi-choice-next").click()
 
+    def background(self, state, person, expected):
+        who = f"{expected.participant} background"
+        if expected.background is not None:
+            raise Failure(f"{who}: the background form came twice")
+        asked = [q["options"][0][0] for q in state["questions"]]
+        if asked != expected.asked:
+            raise Failure(f"{who}: asks {asked}, the study's session.background is {expected.asked}")
+        expected.background = {}
+        for k, question in enumerate(state["questions"]):
+            name, value, input_id = question["options"][(person + k) % len(question["options"])]
+            self.element("#" + input_id).click()
+            expected.background[BACKGROUND_COLUMN[name]] = value
+        self.screenshot("background.png")
+        self.driver.execute_script(MARK_JS, self.element("#jspsych-survey-html-form"))
+        self.element("#jspsych-survey-html-form-next").click()
+
+    def check_layout(self, who):
+        """The rating page fits the window: video, question, every panel's row and Continue in view
+        without scrolling; its labels at least MIN_LABEL_PX."""
+        layout = self.driver.execute_script(LAYOUT_JS)
+        width, height = layout["viewport"]
+        for name, box in layout["parts"].items():
+            if box is None:
+                raise Failure(f"{who}: the rating page has no {name}")
+            left, top, right, bottom = box
+            if top < 0 or left < 0 or bottom > height + 0.5 or right > width + 0.5:
+                raise Failure(f"{who}: the {name} is out of view at {width}x{height} "
+                              f"(at x {left:.0f}-{right:.0f}, y {top:.0f}-{bottom:.0f}): it must fit without scrolling")
+        for name, size in layout["fonts"].items():
+            if size < MIN_LABEL_PX:
+                raise Failure(f"{who}: text '{name}' is {size:g} px; labels must be at least {MIN_LABEL_PX} px")
+        return layout
+
     def ratings(self, state, phase2, index, person, expected, over_http):
         who = f"{expected.participant} rating {index + 1}"
         if index >= len(phase2):
@@ -306,7 +384,17 @@ class Session:
             if time.monotonic() > end:
                 raise Failure(f"{who}: Continue stayed disabled 20 s after the video was sought to its end")
             time.sleep(0.05)
+        layout = self.check_layout(who)
+        if index == 0:
+            expected.layout = layout
+        prompt = self.driver.execute_script("return document.querySelector('.signstim-rating-question').innerText")
+        if expected.prompt.replace("{verb}", trial["verb"]).replace("{minimum}", str(likert["minimum"])).replace(
+                "{maximum}", str(likert["maximum"])) != prompt:
+            raise Failure(f"{who}: the question reads {prompt!r}; the study's prompt is {expected.prompt!r}")
         self.screenshot("phase2-ratings.png")
+        if self.screenshots and index == 0 and "phase2-ratings-window.png" not in self.shots:
+            self.shots.add("phase2-ratings-window.png")
+            self.driver.get_screenshot_as_file(str(pathlib.Path(self.screenshots) / "phase2-ratings-window.png"))
         self.driver.execute_script(MARK_JS, self.element("#jspsych-survey-html-form"))
         self.element("#jspsych-survey-html-form-next").click()
 
@@ -353,6 +441,14 @@ def check_results(data, expected):
         if not row.get("rt_ms", "").isdigit():
             failures.append(f"{where}: rt_ms {row.get('rt_ms')!r} is not a whole number of milliseconds")
 
+    answers = expected.background or {}
+    for number, row in enumerate(records, start=2):
+        for column in BACKGROUND_COLUMN.values():
+            if row.get(column, "") != answers.get(column, ""):
+                failures.append(f"{who}: line {number}: {column} is {row.get(column)!r}, the background form was "
+                                f"answered {answers.get(column, '')!r}")
+    if expected.asked and expected.background is None:
+        failures.append(f"{who}: the study asks {expected.asked} but no background form was shown")
     rating_columns = [c for c in RESULT_COLUMNS if c.startswith("rating_")]
     question_columns = [c for c in RESULT_COLUMNS if c.startswith("q") or c == "n_correct"]
     for i, trial in enumerate(phase1):
@@ -456,6 +552,11 @@ def mutations(text):
         rows[phase1_rows[0]], rows[phase1_rows[1]] = rows[phase1_rows[1]], rows[phase1_rows[0]]
         out["the first two phase-1 rows swapped"] = rows_to_text(rows)
     out["the last row missing"] = rows_to_text(body[:-1])
+    hearing = columns.index("bg_hearing")
+
+    def forget(fields):
+        fields[hearing] = ""
+    out["bg_hearing emptied in the first row"] = edit(0, forget)
     out["a column renamed (rating_a -> rating_A)"] = text.replace("rating_a,", "rating_A,", 1)
     return out
 
@@ -507,6 +608,9 @@ def main():
         print("run_experiment: FAIL: the study has fewer than two participants", file=sys.stderr)
         return 1
     all_ids = [p["id"] for p in study["participants"]]
+    # The session settings as the page gets them: participants/index.js sets window.signstimStudy.
+    index_js = (folder / "experiment" / "participants" / "index.js").read_text(encoding="utf-8")
+    settings = json.loads(index_js[index_js.index("=") + 1:].strip().rstrip(";"))
 
     downloads = tempfile.mkdtemp(prefix="signstim-experiment-downloads-")
     server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(QuietHandler, directory=str(folder)))
@@ -569,8 +673,12 @@ def main():
                 participant,
                 json.loads((base / f"{participant}_timeline_variables.json").read_text(encoding="utf-8")),
                 read_conditions(base / f"{participant}_conditions.csv"))
+            expected.asked = list(settings.get("background", []))
+            expected.prompt = settings.get("rating_prompt", "")
             over_http = number == 1
-            url = (f"http://127.0.0.1:{server.server_address[1]}/experiment/index.html?participant={participant}"
+            # The second is addressed as the experimenter may type it: the bare number (P02 -> 2).
+            given = (participant.lstrip("P").lstrip("0") or "0") if over_http else participant
+            url = (f"http://127.0.0.1:{server.server_address[1]}/experiment/index.html?participant={given}"
                    if over_http else page.as_uri() + f"?participant={participant}")
             start = time.monotonic()
             try:
@@ -588,7 +696,12 @@ def main():
             problems = check_results(data, expected)
             failures += problems
             saved[participant] = (data.decode("utf-8"), expected)
-            notes.append(f"{participant} ({'http://127.0.0.1' if over_http else 'file://'}): "
+            if expected.layout:
+                boxes = expected.layout["parts"]
+                notes.append(f"{participant}: rating page at {expected.layout['viewport'][0]}x"
+                             f"{expected.layout['viewport'][1]}: video bottom {boxes['video'][3]:.0f} px, Continue bottom "
+                             f"{boxes['continue'][3]:.0f} px; smallest label {min(expected.layout['fonts'].values()):g} px")
+            notes.append(f"{participant} ({'http://127.0.0.1' if over_http else 'file://'}, ?participant={given}): "
                          f"{len(expected.answers)} stories, {len(expected.ratings)} rating pages in "
                          f"{time.monotonic() - start:.1f} s; signstim-results_{participant}.csv "
                          f"{'matches' if not problems else 'does NOT match'} the schedule and the responses")

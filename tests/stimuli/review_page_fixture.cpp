@@ -1,5 +1,6 @@
 #include "tests/stimuli/review_page_fixture.hpp"
 
+#include "stimuli/study/study.hpp"
 #include "stimuli/study/study_design.hpp"
 
 #include <cmath>
@@ -94,6 +95,15 @@ StudyListing reviewFixtureListing(const ReviewFixtureShape& shape) {
                              shape.withFrameFolders);
         listing.sentences.push_back(sentence);
     }
+
+    // The experiment's session settings, as a study file without "session" gives them.
+    listing.ratingPrompt = std::string(kDefaultRatingPrompt);
+    listing.background.assign(kBackgroundQuestions.begin(), kBackgroundQuestions.end());
+
+    // The design's Latin square, as planStudy fills it (stimuli/study/study.cpp).
+    listing.groupVersion.assign(shape.stories, {});
+    for (std::size_t s = 0; s < shape.stories; ++s)
+        for (std::size_t g = 0; g < spec.versions; ++g) listing.groupVersion[s].push_back(phase1Version(spec, s, g));
 
     const std::size_t width = std::to_string(shape.participants).size();
     for (std::size_t p = 0; p < shape.participants; ++p) {

@@ -8,12 +8,22 @@
 //   --case wrong-duration  one clip listed 0.5 s longer than its file: the check must fail naming it
 //   --case broken-video    one clip's bytes are not a video: the check must fail naming it
 //   --case console-error   a script error added to the page: the check must fail on the console
+//   --documents-only       only the study's documents (conditions, Gorilla sheets, overview.csv,
+//                          sheets; no media, no browser): for check_conditions_for_psychopy.py
+//   --experiment           also the study's documents (conditions, Gorilla sheets, overview.csv),
+//                          the jsPsych experiment (third_party/jspsych) and manifest.json, and the
+//                          checker is tests/browser/run_experiment.py (at 1366x768, the screen
+//                          the rating page must fit), given --screenshots DIR for its pictures
 //
 // For the failing cases this program exits 0 only when the checker exits 1 and says what was
 // expected, so a checker that crashes, or fails for another reason, fails the test. Exit 77
 // (a CTest skip, never a pass) when ffmpeg, the Python or the browser is missing.
 #include "common/atomic_file.hpp"
+#include "stimuli/study/jspsych_bundle.hpp"
 #include "stimuli/study/review_page.hpp"
+#include "stimuli/study/study.hpp"
+#include "stimuli/study/study_documents.hpp"
+#include "stimuli/study/study_exports.hpp"
 #include "tests/stimuli/review_page_fixture.hpp"
 
 #include <spawn.h>
@@ -48,6 +58,9 @@ struct Options {
     bool small = false;
     std::string python, checker, screenshot;
     bool fullPage = false;
+    bool experiment = false;
+    bool documentsOnly = false;
+    std::string screenshots;
 };
 
 struct RunResult {
@@ -172,7 +185,28 @@ std::vector<std::string> expectedComplaints(const std::string& testCase) {
     return {};
 }
 
+// The documents alone (conditions, Gorilla sheets, overview, sheets), as the study runner
+// writes them: no ffmpeg, no browser.
+int writeDocuments(const Options& options) {
+    if (fs::exists(options.out) && !fs::exists(options.out / marker)) {
+        std::cerr << "review_page_fixture: " << options.out.string() << " exists and is not a fixture folder\n";
+        return 1;
+    }
+    fs::remove_all(options.out);
+    fs::create_directories(options.out);
+    signstim::writeFileAtomic(options.out / marker, "written by signstim_review_page_fixture\n");
+    testing::ReviewFixtureShape shape;
+    if (options.small) shape = {.stories = 4, .participants = 4, .likertSentences = 4};
+    for (const StudyDocument& document : studyDocuments(testing::reviewFixtureListing(shape))) {
+        fs::create_directories((options.out / document.path).parent_path());
+        signstim::writeFileAtomic(options.out / document.path, document.contents);
+    }
+    std::cout << "review_page_fixture: wrote the study documents in " << options.out.string() << "\n";
+    return 0;
+}
+
 int writeAndCheck(const Options& options) {
+    if (options.documentsOnly) return writeDocuments(options);
     if (run({"ffmpeg", "-version"}, false).status != 0) {
         loudSkip("ffmpeg is not installed (apt-get install ffmpeg); it makes the fixture's MP4s");
         return skipped;
@@ -209,6 +243,19 @@ int writeAndCheck(const Options& options) {
     if (options.testCase == "console-error")
         page.insert(page.rfind("</body>"), "<script>reviewPageFixtureUndefined();</script>\n");
     signstim::writeFileAtomic(options.out / "index.html", page);
+    signstim::writeFileAtomic(options.out / "overview.csv", overviewCsv(listing));  // the page links it
+    if (options.experiment) {
+        std::vector<StudyDocument> documents = studyDocuments(listing);
+        for (StudyDocument& document : experimentDocuments(listing, loadJspsychBundle())) documents.push_back(std::move(document));
+        for (const StudyDocument& document : documents) {
+            if (document.path == "index.html") continue;
+            fs::create_directories((options.out / document.path).parent_path());
+            signstim::writeFileAtomic(options.out / document.path, document.contents);
+        }
+        nlohmann::json manifest = nlohmann::json::object();
+        manifest["study"] = listingToJson(listing);
+        signstim::writeFileAtomic(options.out / "manifest.json", manifest.dump(1) + "\n");
+    }
     if (options.testCase == "missing-video") fs::remove(options.out / "clips/story-02_version-vector.mp4");
     if (options.testCase == "broken-video")
         signstim::writeFileAtomic(options.out / "clips/story-01_version-point.mp4", "this is not an MP4 file\n");
@@ -222,7 +269,13 @@ int writeAndCheck(const Options& options) {
         return skipped;
     }
     std::vector<std::string> argv = {options.python, options.checker, options.out.string()};
-    if (!options.screenshot.empty()) {
+    if (options.experiment) {
+        for (const char* a : {"--width", "1366", "--height", "768"}) argv.push_back(a);
+        if (!options.screenshots.empty()) {
+            argv.push_back("--screenshots");
+            argv.push_back(options.screenshots);
+        }
+    } else if (!options.screenshot.empty()) {
         argv.push_back("--screenshot");
         argv.push_back(options.screenshot);
         if (options.fullPage) argv.push_back("--full-page");
@@ -248,8 +301,9 @@ int writeAndCheck(const Options& options) {
 
 int usage() {
     std::cerr << "usage: signstim_review_page_fixture --out DIR [--case pass|missing-video|wrong-duration|"
-                 "broken-video|console-error] [--small]\n"
-                 "         [--python PYTHON --checker check_review_page.py [--screenshot FILE.png [--full-page]]]\n";
+                 "broken-video|console-error] [--small] [--experiment | --documents-only]\n"
+                 "         [--python PYTHON --checker check_review_page.py [--screenshot FILE.png [--full-page]]]\n"
+                 "         [--experiment --python PYTHON --checker run_experiment.py [--screenshots DIR]]\n";
     return 2;
 }
 
@@ -263,6 +317,9 @@ int main(int argc, char** argv) {
         const char* v = nullptr;
         if (arg == "--small") options.small = true;
         else if (arg == "--full-page") options.fullPage = true;
+        else if (arg == "--experiment") options.experiment = true;
+        else if (arg == "--documents-only") options.documentsOnly = true;
+        else if (arg == "--screenshots" && (v = value())) options.screenshots = v;
         else if (arg == "--out" && (v = value())) options.out = v;
         else if (arg == "--case" && (v = value())) options.testCase = v;
         else if (arg == "--python" && (v = value())) options.python = v;

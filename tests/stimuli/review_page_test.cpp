@@ -316,5 +316,82 @@ TEST(ReviewPage, AListingThatNamesWhatItDoesNotHoldIsRefused) {
     EXPECT_THROW(reviewPageHtml(missingClip), std::invalid_argument);
 }
 
+
+// ---- the counterbalancing at the top (issue 24 §7) -------------------------------------------
+
+std::string counterbalancingSection(const std::string& page) { return elementWithId(page, "counterbalancing", "</section>"); }
+
+TEST(ReviewPageCounterbalancing, ComesBeforeEverythingElseAndLinksTheOverviewCsv) {
+    const std::string page = reviewPageHtml(reviewFixtureListing());
+    const auto section = page.find("id=\"counterbalancing\"");
+    ASSERT_NE(section, std::string::npos);
+    EXPECT_LT(section, page.find("<nav class=\"toc\""));
+    EXPECT_LT(section, page.find("id=\"participants\""));
+    EXPECT_NE(counterbalancingSection(page).find("href=\"overview.csv\""), std::string::npos);
+}
+
+TEST(ReviewPageCounterbalancing, TheSquareShowsEachStorysVersionInEachGroup) {
+    const StudyListing listing = reviewFixtureListing();
+    const std::string section = counterbalancingSection(reviewPageHtml(listing));
+    const std::string square = section.substr(section.find("<table class=\"square\""),
+                                              section.find("</table>", section.find("<table class=\"square\"")) -
+                                                  section.find("<table class=\"square\""));
+    static const std::regex row(R"re(<tr><td class="story"><a href="#[^"]*">([^<]*)</a></td>(.*?)</tr>)re");
+    static const std::regex badge(R"re(<span class="badge v\d" title="([^"]*)")re");
+    std::size_t rows = 0;
+    for (auto it = std::sregex_iterator(square.begin(), square.end(), row); it != std::sregex_iterator(); ++it, ++rows) {
+        ASSERT_LT(rows, listing.stories.size());
+        EXPECT_EQ((*it)[1], listing.stories[rows].id);
+        const std::string cells = (*it)[2];
+        std::vector<std::string> shown;
+        for (auto b = std::sregex_iterator(cells.begin(), cells.end(), badge); b != std::sregex_iterator(); ++b)
+            shown.push_back((*b)[1]);
+        ASSERT_EQ(shown.size(), listing.groupVersion[rows].size());
+        for (std::size_t g = 0; g < shown.size(); ++g) EXPECT_EQ(shown[g], listing.versions[listing.groupVersion[rows][g]]);
+    }
+    EXPECT_EQ(rows, listing.stories.size());
+}
+
+TEST(ReviewPageCounterbalancing, PositionCountsAreTheParticipantsVersionAtEachTrial) {
+    StudyListing listing = reviewFixtureListing({.stories = 4, .participants = 4, .likertSentences = 4});
+    // Every participant sees version 0 first: the first column reads 4, 0, 0, 0 and is marked uneven.
+    for (ListedParticipant& p : listing.participants)
+        for (std::size_t i = 0; i < p.phase1.size(); ++i)
+            if (p.phase1[i].version == 0) std::swap(p.phase1[i], p.phase1[0]);
+    for (ListedParticipant& p : listing.participants)
+        for (std::size_t i = 0; i < p.phase1.size(); ++i) p.phase1[i].trial = i + 1;
+    const std::string section = counterbalancingSection(reviewPageHtml(listing));
+    const std::string table = section.substr(section.find("<table class=\"positions\""));
+    static const std::regex row(R"re(<tr><th><span class="badge v\d" title="([^"]*)".*?</th>(.*?)</tr>)re");
+    static const std::regex cell(R"re(<td class="(even|off)">(\d+)</td>)re");
+    std::map<std::string, std::vector<std::pair<std::string, int>>> counts;
+    for (auto it = std::sregex_iterator(table.begin(), table.end(), row); it != std::sregex_iterator(); ++it) {
+        const std::string cells = (*it)[2];
+        for (auto c = std::sregex_iterator(cells.begin(), cells.end(), cell); c != std::sregex_iterator(); ++c)
+            counts[(*it)[1]].push_back({(*c)[1], std::stoi((*c)[2])});
+    }
+    ASSERT_EQ(counts.size(), listing.versions.size());
+    for (std::size_t v = 0; v < listing.versions.size(); ++v) {
+        const auto& shown = counts[listing.versions[v]];
+        ASSERT_EQ(shown.size(), 4u);
+        for (std::size_t i = 0; i < 4; ++i) {
+            int expected = 0;
+            for (const ListedParticipant& p : listing.participants) expected += p.phase1[i].version == v;
+            EXPECT_EQ(shown[i].second, expected) << listing.versions[v] << " at " << i + 1;
+            EXPECT_EQ(shown[i].first, expected == 1 ? "even" : "off");
+        }
+    }
+    EXPECT_EQ(counts[listing.versions[0]][0].second, 4);
+    EXPECT_NE(section.find("0 to 4"), std::string::npos);
+}
+
+TEST(ReviewPageCounterbalancing, StyleAndScriptAreTheEmbeddedFiles) {
+    const std::string page = reviewPageHtml(reviewFixtureListing({.stories = 4, .participants = 4, .likertSentences = 4}));
+    // review_page.css and review_page.js are written inline, whole (their first comments name them).
+    EXPECT_NE(page.find("<style>/* signstim: the review page's stylesheet"), std::string::npos);
+    EXPECT_NE(page.find("<script>// signstim: the review page's script"), std::string::npos);
+    EXPECT_NE(page.find("table.positions td.off"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace signstim::stimuli

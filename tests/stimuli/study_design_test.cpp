@@ -176,5 +176,135 @@ TEST(StudyDesign, TheDefaultScheduleIsPinned) {
     EXPECT_EQ(order, "0:1 5:2 7:0 1:2 8:1 9:2 3:0 6:3 4:1 11:0 10:3 2:3 0 4 2 6 1 5 7 3 ");
 }
 
+
+// ---- order: "balanced" (a Williams-type phase-1 order) -------------------------------------
+
+namespace balanced {
+
+std::vector<StudyDesignSpec> designs() {
+    std::vector<StudyDesignSpec> all = signstim::stimuli::designs();
+    for (StudyDesignSpec& spec : all) {
+        spec.order = StoryOrder::Balanced;
+        spec.participants = 3 * williamsRows(spec.versions);  // three complete blocks
+    }
+    return all;
+}
+
+}  // namespace balanced
+
+TEST(StudyDesignBalancedOrder, EachVersionSitsAtEachTrialPositionEquallyOftenAcrossABlock) {
+    for (const StudyDesignSpec& spec : balanced::designs()) {
+        const std::size_t block = williamsRows(spec.versions);
+        for (std::size_t first = 0; first < spec.participants; first += block) {
+            std::map<std::pair<std::size_t, std::size_t>, std::size_t> count;  // (position, version)
+            for (std::size_t p = first; p < first + block; ++p) {
+                const ParticipantSchedule s = participantSchedule(spec, p);
+                for (std::size_t i = 0; i < s.phase1.size(); ++i) ++count[{i, s.phase1[i].version}];
+            }
+            for (std::size_t i = 0; i < spec.stories; ++i)
+                for (std::size_t v = 0; v < spec.versions; ++v)
+                    EXPECT_EQ((count[{i, v}]), block / spec.versions)
+                        << spec.stories << "x" << spec.versions << ", block from participant " << first << ", position "
+                        << i << ", version " << v;
+        }
+    }
+}
+
+TEST(StudyDesignBalancedOrder, RandomOrderLeavesTrialPositionsUnevenWhereBalancedDoesNot) {
+    // The contrast the review page shows: the default study's random order does not balance
+    // versions over positions (the issue saw 1 to 11 where 6 is expected), the balanced one does.
+    StudyDesignSpec spec;  // 12 x 4, 24 participants
+    spec.seed = 20151;
+    const auto spread = [&](StoryOrder order) {
+        spec.order = order;
+        std::map<std::pair<std::size_t, std::size_t>, std::size_t> count;
+        for (std::size_t p = 0; p < spec.participants; ++p) {
+            const ParticipantSchedule s = participantSchedule(spec, p);
+            for (std::size_t i = 0; i < s.phase1.size(); ++i) ++count[{i, s.phase1[i].version}];
+        }
+        std::size_t low = spec.participants, high = 0;
+        for (std::size_t i = 0; i < spec.stories; ++i)
+            for (std::size_t v = 0; v < spec.versions; ++v) {
+                low = std::min(low, count[{i, v}]);
+                high = std::max(high, count[{i, v}]);
+            }
+        return std::pair{low, high};
+    };
+    EXPECT_EQ(spread(StoryOrder::Balanced), (std::pair<std::size_t, std::size_t>{6, 6}));
+    const auto random = spread(StoryOrder::Random);
+    EXPECT_LT(random.first, random.second);
+}
+
+TEST(StudyDesignBalancedOrder, SchedulesStayPermutationsWithEveryVersionEquallyOftenAndTheGroupsVersions) {
+    for (const StudyDesignSpec& spec : balanced::designs()) {
+        for (std::size_t p = 0; p < spec.participants; ++p) {
+            const ParticipantSchedule s = participantSchedule(spec, p);
+            ASSERT_EQ(s.phase1.size(), spec.stories);
+            std::set<std::size_t> stories;
+            std::map<std::size_t, std::size_t> perVersion;
+            for (const Phase1Trial& t : s.phase1) {
+                stories.insert(t.story);
+                ++perVersion[t.version];
+                EXPECT_EQ(t.version, phase1Version(spec, t.story, s.group)) << "the Latin square is kept";
+            }
+            EXPECT_EQ(stories.size(), spec.stories) << "a story seen twice";
+            ASSERT_EQ(perVersion.size(), spec.versions);
+            for (const auto& entry : perVersion) EXPECT_EQ(entry.second, spec.stories / spec.versions);
+        }
+    }
+    // The default design: every version 3 times.
+    StudyDesignSpec spec;
+    spec.order = StoryOrder::Balanced;
+    for (std::size_t p = 0; p < spec.participants; ++p) {
+        std::map<std::size_t, int> perVersion;
+        for (const Phase1Trial& t : participantSchedule(spec, p).phase1) ++perVersion[t.version];
+        for (std::size_t v = 0; v < 4; ++v) EXPECT_EQ(perVersion[v], 3);
+    }
+}
+
+TEST(StudyDesignBalancedOrder, WilliamsRowsBalanceWhichVersionFollowsWhich) {
+    for (std::size_t versions = 2; versions <= 8; ++versions) {
+        std::map<std::pair<std::size_t, std::size_t>, int> pairs;
+        const std::size_t rows = williamsRows(versions);
+        for (std::size_t r = 0; r < rows; ++r) {
+            const std::vector<std::size_t> row = williamsRow(versions, r);
+            EXPECT_EQ(std::set<std::size_t>(row.begin(), row.end()).size(), versions) << "row " << r << " repeats";
+            for (std::size_t j = 0; j + 1 < versions; ++j) ++pairs[{row[j], row[j + 1]}];
+        }
+        EXPECT_EQ(pairs.size(), versions * (versions - 1)) << versions << " versions";
+        for (const auto& entry : pairs) EXPECT_EQ(entry.second, static_cast<int>(rows / versions)) << versions;
+    }
+}
+
+TEST(StudyDesignBalancedOrder, IsDeterministicAndIndependentOfTheParticipantCount) {
+    for (const StudyDesignSpec& spec : balanced::designs()) {
+        StudyDesignSpec more = spec;
+        more.participants = spec.participants * 2;
+        for (std::size_t p = 0; p < spec.participants; ++p) {
+            const ParticipantSchedule a = participantSchedule(spec, p), b = participantSchedule(more, p),
+                                      c = participantSchedule(spec, p);
+            ASSERT_EQ(a.phase1.size(), b.phase1.size());
+            for (std::size_t i = 0; i < a.phase1.size(); ++i) {
+                EXPECT_EQ(a.phase1[i].story, b.phase1[i].story);
+                EXPECT_EQ(a.phase1[i].story, c.phase1[i].story);
+            }
+        }
+    }
+}
+
+TEST(StudyDesignBalancedOrder, TheRandomOrderIsTheDefaultAndUnchanged) {
+    StudyDesignSpec random;
+    StudyDesignSpec balancedSpec;
+    balancedSpec.order = StoryOrder::Balanced;
+    EXPECT_EQ(StudyDesignSpec{}.order, StoryOrder::Random);
+    bool differs = false;
+    for (std::size_t p = 0; p < 8; ++p) {
+        const ParticipantSchedule a = participantSchedule(random, p), b = participantSchedule(balancedSpec, p);
+        EXPECT_EQ(a.group, b.group) << "the groups do not depend on the order";
+        for (std::size_t i = 0; i < a.phase1.size(); ++i) differs = differs || a.phase1[i].story != b.phase1[i].story;
+    }
+    EXPECT_TRUE(differs);
+}
+
 }  // namespace
 }  // namespace signstim::stimuli

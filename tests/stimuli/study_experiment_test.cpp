@@ -119,7 +119,8 @@ TEST(StudyExperiment, SessionWritesTheDocumentedResultsHeaderWithoutFetchOrModul
         "participant", "phase", "trial", "story_id", "sentence_id", "version", "panel_code",
         "q1_response", "q1_correct", "q2_response", "q2_correct", "q3_response", "q3_correct",
         "q4_response", "q4_correct", "n_correct", "rating_a", "rating_b", "rating_c", "rating_d",
-        "rating_point", "rating_vector", "rating_animator", "rating_uninflected", "rt_ms"};
+        "rating_point", "rating_vector", "rating_animator", "rating_uninflected", "rt_ms",
+        "bg_hearing", "bg_asl_age", "bg_asl_school", "bg_daily_use"};
     const std::size_t start = script.find("const RESULT_COLUMNS = [");
     ASSERT_NE(start, std::string::npos);
     const std::string list = script.substr(start, script.find("];", start) - start);

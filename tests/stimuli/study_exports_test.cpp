@@ -239,12 +239,63 @@ TEST(StudyExports, ConditionsCsvHeaderIsTheSameValidVariableNamesForEveryPartici
         unique.insert(name);
     }
     EXPECT_EQ(unique.size(), header.size()) << "column names repeat";
-    for (const char* expected : {"phase", "trial", "participant", "group", "story_id", "story_title", "version",
+    for (const char* expected : {"phase", "trial", "participant_id", "group", "story_id", "story_title", "version",
                                         "sentence_id", "video_file", "poster_file", "duration_s", "q4_text",
-                                        "q4_choice_d", "q4_answer", "q4_answer_index", "panel_d_version", "panel_code"})
+                                        "q4_choice_d", "q4_answer", "q4_answer_index", "q4_answer_text", "panel_d_version", "panel_code"})
         EXPECT_NE(std::find(header.begin(), header.end(), expected), header.end()) << expected;
     for (std::size_t p = 1; p < listing.participants.size(); ++p)
         EXPECT_EQ(parseCsv(conditionsCsv(listing, p))[0], header);
+}
+
+TEST(StudyExports, ConditionsCsvAvoidsPsychopysSessionFieldsAndBuilderNames) {
+    // PsychoPy saves its session dialog's fields (expInfo) beside the conditions' columns; a
+    // column of the same name is overwritten in the saved data. The Python check
+    // (check_conditions_for_psychopy.py) holds the whole of PsychoPy's reserved names.
+    const std::vector<std::string> header = parseCsv(conditionsCsv(fixture(), 0))[0];
+    for (const char* reserved : {"participant", "session", "date", "expName", "psychopyVersion", "frameRate",
+                                 "expStart", "win", "t", "thisExp", "filename", "trials"})
+        EXPECT_EQ(std::find(header.begin(), header.end(), reserved), header.end()) << reserved;
+}
+
+TEST(StudyExports, WholeNumberColumnsAreNeverEmptySoPandasReadsThemAsIntegers) {
+    const StudyListing listing = fixture();
+    for (std::size_t p = 0; p < listing.participants.size(); ++p) {
+        for (const Row& row : conditionRows(listing, p)) {
+            for (const auto& cell : row) {
+                const bool whole = cell.first == "phase" || cell.first == "trial" || cell.first == "group" ||
+                                   cell.first.ends_with("_answer_index");
+                if (!whole) continue;
+                ASSERT_FALSE(cell.second.empty()) << cell.first << " empty in a " << row.at("display") << " row";
+                EXPECT_EQ(cell.second.find('.'), std::string::npos) << cell.first;
+            }
+            if (row.at("phase") == "2") {
+                EXPECT_EQ(row.at("q1_answer_index"), "-1") << "no question: -1";
+            }
+        }
+    }
+}
+
+TEST(StudyExports, GorillaSpreadsheetHasInstructionBreakAndEndRowsAroundTheTrials) {
+    const StudyListing listing = fixture();
+    for (std::size_t p = 0; p < listing.participants.size(); ++p) {
+        const std::vector<Row> sheet = rowsOf(parseCsv(gorillaSpreadsheetCsv(listing, p)));
+        const std::vector<Row> trials = conditionRows(listing, p);
+        ASSERT_EQ(sheet.size(), trials.size() + 3);
+        EXPECT_EQ(sheet.front().at("display"), "instructions");
+        EXPECT_EQ(sheet.back().at("display"), "end");
+        const std::size_t phase1 = listing.participants[p].phase1.size();
+        EXPECT_EQ(sheet[1 + phase1].at("display"), "break");
+        for (const std::size_t text : {std::size_t{0}, 1 + phase1, sheet.size() - 1}) EXPECT_FALSE(sheet[text].at("text").empty());
+        // The trials are the conditions file's rows, cell for cell, in the same order.
+        for (std::size_t i = 0; i < trials.size(); ++i) {
+            const Row& row = sheet[i < phase1 ? 1 + i : 2 + i];
+            for (const auto& cell : trials[i]) EXPECT_EQ(row.at(cell.first), cell.second) << cell.first << " row " << i;
+            EXPECT_EQ(row.at("randomise_trials"), "") << "the schedule's order, never reshuffled";
+            if (row.at("display") == "story") {
+                EXPECT_EQ(row.at("ANSWER"), row.at("q1_answer_text")) << "ANSWER is a button's text";
+            }
+        }
+    }
 }
 
 TEST(StudyExports, EveryTrialOfTheScheduleIsARowInOrder) {
@@ -260,7 +311,7 @@ TEST(StudyExports, EveryTrialOfTheScheduleIsARowInOrder) {
             EXPECT_EQ(row.at("phase"), "1");
             EXPECT_EQ(row.at("display"), "story");
             EXPECT_EQ(row.at("trial"), std::to_string(i + 1));
-            EXPECT_EQ(row.at("participant"), participant.id);
+            EXPECT_EQ(row.at("participant_id"), participant.id);
             EXPECT_EQ(row.at("group"), std::to_string(participant.group + 1));
             EXPECT_EQ(row.at("story_id"), listing.stories[trial.story].id);
             EXPECT_EQ(row.at("story_title"), listing.stories[trial.story].title);
@@ -276,7 +327,7 @@ TEST(StudyExports, EveryTrialOfTheScheduleIsARowInOrder) {
             EXPECT_EQ(row.at("phase"), "2");
             EXPECT_EQ(row.at("display"), "likert");
             EXPECT_EQ(row.at("trial"), std::to_string(i + 1));
-            EXPECT_EQ(row.at("participant"), participant.id);
+            EXPECT_EQ(row.at("participant_id"), participant.id);
             EXPECT_EQ(row.at("sentence_id"), sentence.id);
             EXPECT_EQ(row.at("gloss"), sentence.gloss);
             EXPECT_EQ(row.at("video_file"), sentence.clip.video);
@@ -325,6 +376,7 @@ TEST(StudyExports, AnswersAreLettersAndIndicesAndAMissingChoiceIsEmpty) {
             EXPECT_EQ(row.at(prefix + "text"), question.text);
             EXPECT_EQ(row.at(prefix + "answer"), std::string(1, static_cast<char>('A' + question.answer)));
             EXPECT_EQ(row.at(prefix + "answer_index"), std::to_string(question.answer));
+            EXPECT_EQ(row.at(prefix + "answer_text"), question.choices[static_cast<std::size_t>(question.answer)]);
             EXPECT_EQ(row.at(prefix + "choice_a"), question.choices[0]);
             EXPECT_EQ(row.at(prefix + "choice_d"), question.choices.size() > 3 ? question.choices[3] : "");
         }

@@ -188,6 +188,93 @@ TEST(StudyPlan, ListingRoundTripsThroughJson) {
     }
 }
 
+// ---- issue 24: "order" and "session" ---------------------------------------------------------
+
+std::string withField(const std::string& field) {
+    std::string text = kStudy;
+    text.replace(text.rfind('}'), 1, ", " + field + "}");
+    return text;
+}
+
+TEST(StudyFile, OrderIsRandomByDefaultOrBalanced) {
+    EXPECT_EQ(parse(kStudy).order, StoryOrder::Random);
+    EXPECT_EQ(parse(kStudy).designSpec().order, StoryOrder::Random);
+    EXPECT_EQ(parse(withField(R"("order": "random")")).order, StoryOrder::Random);
+    const StudyFile balanced = parse(withField(R"("order": "balanced")"));
+    EXPECT_EQ(balanced.order, StoryOrder::Balanced);
+    EXPECT_EQ(balanced.designSpec().order, StoryOrder::Balanced);
+    for (const std::string bad : {R"("order": "williams")", R"("order": 1)", R"("order": "")"}) {
+        try {
+            parse(withField(bad));
+            ADD_FAILURE() << "accepted: " << bad;
+        } catch (const signstim::InputError& e) {
+            EXPECT_EQ(e.field(), "/order") << e.what();
+            EXPECT_NE(std::string(e.what()).find("balanced"), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(StudyFile, SessionSetsThePromptAndTheBackgroundQuestions) {
+    const StudyFile plain = parse(kStudy);
+    EXPECT_EQ(plain.ratingPrompt, kDefaultRatingPrompt);
+    EXPECT_NE(plain.ratingPrompt.find("quality of the verb"), std::string::npos) << "the paper's question";
+    EXPECT_EQ(plain.background, (std::vector<std::string>{"hearing", "aslAge", "aslSchool", "dailyUse"}));
+    const StudyFile set = parse(withField(R"("session": {"ratingPrompt": "Rate {verb}", "background": ["dailyUse", "hearing"]})"));
+    EXPECT_EQ(set.ratingPrompt, "Rate {verb}");
+    EXPECT_EQ(set.background, (std::vector<std::string>{"dailyUse", "hearing"}));
+    EXPECT_TRUE(parse(withField(R"("session": {"background": []})")).background.empty());
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {R"("session": {"background": ["age"]})", "/session/background/0"},
+        {R"("session": {"background": ["hearing", "hearing"]})", "/session/background/1"},
+        {R"("session": {"background": "hearing"})", "/session/background"},
+        {R"("session": {"ratingPrompt": ""})", "/session/ratingPrompt"},
+        {R"("session": {"prompt": "x"})", "/session/prompt"},
+        {R"("session": true)", "/session"}};
+    for (const auto& [text, field] : bad) {
+        try {
+            parse(withField(text));
+            ADD_FAILURE() << "accepted: " << text;
+        } catch (const signstim::InputError& e) {
+            EXPECT_EQ(e.field(), field) << e.what();
+        }
+    }
+}
+
+TEST(StudyPlan, TheSessionTravelsWithTheListingAndOldPlansGetTheDefaults) {
+    const std::vector<Story> stories = fakeStories(8);
+    const Story sentences = fakeSentences();
+    const StudyListing listing = planStudy(
+        parse(withField(R"("session": {"ratingPrompt": "Rate {verb}", "background": ["aslAge"]})")), stories,
+        &sentences, "1", false);
+    EXPECT_EQ(listing.ratingPrompt, "Rate {verb}");
+    EXPECT_EQ(listing.background, (std::vector<std::string>{"aslAge"}));
+    nlohmann::json json = listingToJson(listing);
+    EXPECT_EQ(listingFromJson(json, "plan.json").ratingPrompt, "Rate {verb}");
+    EXPECT_EQ(listingFromJson(json, "plan.json").background, listing.background);
+    json.erase("ratingPrompt");
+    json.erase("background");
+    const StudyListing old = listingFromJson(json, "plan.json");  // a plan written before issue 24
+    EXPECT_EQ(old.ratingPrompt, kDefaultRatingPrompt);
+    EXPECT_EQ(old.background.size(), kBackgroundQuestions.size());
+}
+
+TEST(StudyPlan, BalancedOrderChangesTheSchedulesAndTheDesignHashButNotTheGroups) {
+    const std::vector<Story> stories = fakeStories(8);
+    const Story sentences = fakeSentences();
+    const StudyListing random = planStudy(parse(kStudy), stories, &sentences, "1", false);
+    const StudyListing balanced = planStudy(parse(withField(R"("order": "balanced")")), stories, &sentences, "1", false);
+    EXPECT_NE(random.designHash, balanced.designHash);
+    ASSERT_EQ(random.participants.size(), balanced.participants.size());
+    for (std::size_t p = 0; p < random.participants.size(); ++p)
+        EXPECT_EQ(random.participants[p].group, balanced.participants[p].group);
+    // 8 participants = two blocks of the 4 Williams rows: each version twice at each position.
+    std::map<std::pair<std::size_t, std::size_t>, int> count;
+    for (const ListedParticipant& p : balanced.participants)
+        for (std::size_t i = 0; i < p.phase1.size(); ++i) ++count[{i, p.phase1[i].version}];
+    for (std::size_t i = 0; i < 8; ++i)
+        for (std::size_t v = 0; v < 4; ++v) EXPECT_EQ((count[{i, v}]), 2) << "position " << i << " version " << v;
+}
+
 TEST(StudyNames, ParticipantIdsArePaddedToTheCount) {
     EXPECT_EQ(participantId(0, 24), "P01");
     EXPECT_EQ(participantId(99, 100), "P100");

@@ -2,10 +2,15 @@
 // --experiment jspsych` writes this file unchanged into every study's experiment/ folder; what
 // differs between studies and participants is in participants/*.js.
 //
-// index.html?participant=P07 runs P07's session, in the order of their schedule:
+// index.html?participant=P07 (or ?participant=7, P7) runs P07's session, in the order of their
+// schedule:
+//   background: the study's background questions (hearing status, age of ASL acquisition,
+//            schooling, daily use; study file "session.background"), saved on every row;
 //   phase 1: each story's video plays once (no controls, no pause, no replay), then its
 //            multiple-choice questions;
-//   phase 2: each side-by-side video (controls: replay allowed) with a rating of every panel.
+//   phase 2: each side-by-side video (controls: replay allowed) with a rating of every panel,
+//            asked in the study's words (study file "session.ratingPrompt"; by default the
+//            paper's: the quality of the verb).
 // At the end the answers are saved as signstim-results_P07.csv (one row per trial) on the
 // participant's machine, and handed to window.signstimHooks.onFinish when a page defines it
 // (a server: JATOS, Pavlovia, your own; docs/experiment.md). Without ?participant= the page
@@ -25,10 +30,43 @@
     "rating_a", "rating_b", "rating_c", "rating_d",
     "rating_point", "rating_vector", "rating_animator", "rating_uninflected",
     "rt_ms",
+    "bg_hearing", "bg_asl_age", "bg_asl_school", "bg_daily_use",
   ];
   const LETTERS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ";
   // The timeline files name clips relative to the study folder; this page is one level down.
   const STUDY_FOLDER = "../";
+  // Huenerfauth, Lu & Kacorri 2015 §4: 1-to-10 ratings of "the quality of the verb". Used when
+  // participants/index.js (from an older signstim) carries no prompt.
+  const DEFAULT_RATING_PROMPT = "How would you rate the quality of the verb {verb} in each panel?";
+
+  // The background questions a study may ask (study file "session.background", docs/experiment.md):
+  // what Kacorri & Huenerfauth (2015) advise reporting of participants of ASL animation studies,
+  // asked as facts about a person's life rather than as a self-rating of fluency. Each answer is
+  // saved under `column` as the option's short code.
+  const BACKGROUND = {
+    hearing: {
+      column: "bg_hearing",
+      prompt: "Which describes you?",
+      options: [["deaf", "Deaf or deaf"], ["hard-of-hearing", "Hard of hearing"], ["hearing", "Hearing"],
+                ["no-answer", "I prefer not to say"]],
+    },
+    aslAge: {
+      column: "bg_asl_age",
+      prompt: "How old were you when you began using ASL?",
+      options: [["0-2", "I have used ASL since I was a baby"], ["3-7", "Age 3 to 7"], ["8-12", "Age 8 to 12"],
+                ["13-17", "Age 13 to 17"], ["18+", "Age 18 or older"]],
+    },
+    aslSchool: {
+      column: "bg_asl_school",
+      prompt: "Did you go to a school where classes were taught mainly in ASL?",
+      options: [["yes", "Yes"], ["part", "For part of my schooling"], ["no", "No"]],
+    },
+    dailyUse: {
+      column: "bg_daily_use",
+      prompt: "Do you use ASL every day (at home, at work, or with family, a partner or friends)?",
+      options: [["daily", "Yes, every day"], ["weekly", "Often, but not every day"], ["rarely", "Rarely"]],
+    },
+  };
 
   function escapeHtml(text) {
     return String(text).replace(/[&<>"']/g, (c) =>
@@ -37,6 +75,14 @@
 
   function clipUrl(path) {
     return STUDY_FOLDER + path.split("/").map(encodeURIComponent).join("/");
+  }
+
+  // The study's phase-2 question with {verb}, {minimum} and {maximum} filled in.
+  function ratingPrompt(study, verb, likert) {
+    const template = study && typeof study.rating_prompt === "string" && study.rating_prompt !== ""
+      ? study.rating_prompt : DEFAULT_RATING_PROMPT;
+    return template.replace(/\{(verb|minimum|maximum)\}/g, (match, name) =>
+      name === "verb" ? verb : String(likert[name]));
   }
 
   function plural(count, one, many) {
@@ -60,8 +106,9 @@
       html +=
         "<h2>Part 2 · " + plural(videos, "video", "videos") + "</h2>" +
         "<p>Each video shows one sentence signed " + panels + " times side by side, in panels " +
-        panelList(panels) + ". You may replay it as often as you like, and you rate how well each panel " +
-        "signs the sentence, from " + vars.likert.minimum + " to " + vars.likert.maximum + ".</p>";
+        panelList(panels) + "; the panels differ only in how the verb is signed. You may replay it as often " +
+        "as you like, and you rate the quality of the verb in each panel, from " + vars.likert.minimum + " to " +
+        vars.likert.maximum + ".</p>";
     }
     html += "<p class=\"signstim-note\">At the end your answers are saved as a file on this computer.</p>";
     return html;
@@ -87,9 +134,9 @@
     return "<h1>Part 2</h1>" +
       "<p>Each video now shows the same sentence signed " + panels + " times, side by side, in panels " +
       panelList(panels) + ". The panels play together.</p>" +
-      "<p>Watch the video to the end; replay it as often as you like. Then rate how well the sentence is " +
-      "signed in each panel, from " + vars.likert.minimum + " (very poorly) to " + vars.likert.maximum +
-      " (very well).</p>";
+      "<p>The panels differ only in how the verb is signed. Watch the video to the end; replay it as often as " +
+      "you like. Then rate the quality of the verb in each panel, from " + vars.likert.minimum +
+      " (very poor) to " + vars.likert.maximum + " (very good).</p>";
   }
 
   function ratingPreambleHtml(url, index, count) {
@@ -99,14 +146,14 @@
       "controlslist=\"nodownload noremoteplayback\"></video>";
   }
 
-  function ratingFormHtml(panels, likert) {
+  function ratingFormHtml(panels, likert, prompt) {
     const values = [];
     for (let v = likert.minimum; v <= likert.maximum; ++v) values.push(v);
     let html =
-      "<p class=\"signstim-rating-question\">How well is the sentence signed in each panel?</p>" +
+      "<p class=\"signstim-rating-question\">" + escapeHtml(prompt) + "</p>" +
       "<table class=\"signstim-ratings\"><thead><tr><th scope=\"col\"><span class=\"signstim-hidden\">Panel</span></th>";
     values.forEach((v, i) => {
-      const anchor = i === 0 ? "very poorly" : i === values.length - 1 ? "very well" : "";
+      const anchor = i === 0 ? "very poor" : i === values.length - 1 ? "very good" : "";
       html += "<th scope=\"col\">" + v + (anchor ? "<span class=\"signstim-anchor\">" + anchor + "</span>" : "") + "</th>";
     });
     html += "</tr></thead><tbody>";
@@ -121,6 +168,21 @@
     }
     html += "</tbody></table>" +
       "<p class=\"signstim-note\" id=\"signstim-rating-wait\">You can continue once the video has played to the end.</p>";
+    return html;
+  }
+
+  function backgroundFormHtml(ids) {
+    let html = "<h1>About you</h1><p>Before the videos, a few questions about you and ASL.</p>";
+    for (const id of ids) {
+      const question = BACKGROUND[id];
+      html += "<fieldset class=\"signstim-background\"><legend>" + escapeHtml(question.prompt) + "</legend>";
+      for (const [code, label] of question.options) {
+        const inputId = "signstim-bg-" + id + "-" + code;
+        html += "<label for=\"" + inputId + "\"><input type=\"radio\" id=\"" + inputId + "\" name=\"" + id +
+          "\" value=\"" + escapeHtml(code) + "\" required> " + escapeHtml(label) + "</label>";
+      }
+      html += "</fieldset>";
+    }
     return html;
   }
 
@@ -152,9 +214,13 @@
     video.querySelectorAll("source").forEach((source) => source.addEventListener("error", fail));
   }
 
+  // `background`: the answers of the background form by column, copied onto every row.
+  let background = {};
+
   function emptyRow(vars, phase, trial) {
     const row = {};
     for (const column of RESULT_COLUMNS) row[column] = "";
+    Object.assign(row, background);
     row.participant = vars.participant;
     row.phase = phase;
     row.trial = trial;
@@ -221,6 +287,19 @@
 
     timeline.push(textPage(welcomeHtml(vars), "Begin"));
 
+    const askAbout = ((window.signstimStudy || {}).background || []).filter((id) => BACKGROUND[id]);
+    if (askAbout.length > 0) {
+      timeline.push({
+        type: jsPsychSurveyHtmlForm,
+        html: backgroundFormHtml(askAbout),
+        button_label: "Continue",
+        data: { signstim_page: "background" },
+        on_finish: (data) => {
+          for (const id of askAbout) background[BACKGROUND[id].column] = data.response[id] || "";
+        },
+      });
+    }
+
     vars.phase1.forEach((trial, index) => {
       const url = clipUrl(trial.video[0]);
       timeline.push(textPage(storyReadyHtml(index, stories), "Play the story"));
@@ -259,7 +338,7 @@
           type: jsPsychSurveyHtmlForm,
           // A function: evaluated when the trial starts, after the preload has made its copy.
           preamble: () => ratingPreambleHtml(jsPsych.pluginAPI.getVideoBuffer(url) || url, index, videos),
-          html: ratingFormHtml(panels, vars.likert),
+          html: ratingFormHtml(panels, vars.likert, ratingPrompt(window.signstimStudy, trial.verb, vars.likert)),
           button_label: "Continue",
           on_load: () => {
             const video = document.getElementById("signstim-rating-video");
@@ -384,15 +463,30 @@
     jsPsych.run(buildTimeline(jsPsych, vars, rows));
   }
 
+  // The study's id for what the experimenter typed: "P07" as is; "7", "P7", "p007" as the
+  // participant numbered 7 (ids are "P" and a zero-padded number); null when none matches.
+  function findParticipant(study, given) {
+    const typed = given.trim();
+    if (study.participants.indexOf(typed) >= 0) return typed;
+    const number = /^[Pp]?\s*0*(\d+)$/.exec(typed);
+    if (!number) return null;
+    for (const id of study.participants) {
+      const own = /^P0*(\d+)$/.exec(id);
+      if (own && own[1] === number[1]) return id;
+    }
+    return null;
+  }
+
   function main() {
     const study = window.signstimStudy;
-    const id = new URLSearchParams(location.search).get("participant");
-    if (id === null || id === "") {
+    const given = new URLSearchParams(location.search).get("participant");
+    if (given === null || given === "") {
       showChooser(study, "");
       return;
     }
-    if (study.participants.indexOf(id) < 0) {
-      showChooser(study, "This study has no participant \u201c" + id + "\u201d.");
+    const id = findParticipant(study, given);
+    if (id === null) {
+      showChooser(study, "This study has no participant \u201c" + given + "\u201d.");
       return;
     }
     loadParticipant(id).then((vars) => {
