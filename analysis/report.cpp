@@ -1,10 +1,10 @@
 #include "analysis/report.hpp"
 
+#include "analysis/figure_png.hpp"
 #include "analysis/report_models.hpp"
 #include "analysis/svg.hpp"
 #include "analysis/text_format.hpp"
 #include "common/number_format.hpp"
-#include "renderer/image_io.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -369,10 +369,7 @@ std::vector<ReportFile> analysisReport(const StudyAnalysis& a, const ReportInput
     if (in.models && in.models->ran()) files.push_back({"models/models-output.csv", in.models->output});
     for (const Figure& f : figures) {
         files.push_back({"figures/" + f.name + ".svg", svgDocument(f.drawing)});
-        render::ImageWriteOptions png;
-        png.pngCompression = 6;
-        png.alpha = false;
-        const std::vector<std::uint8_t> bytes = render::encodePng(render::rasterizeDrawing(f.drawing, kFigurePixelsPerUnit), png);
+        const std::vector<std::uint8_t> bytes = figurePng(f.drawing, in.dpi > 0 ? in.dpi : kDefaultFigureDpi);
         files.push_back({"figures/" + f.name + ".png", std::string(bytes.begin(), bytes.end())});
     }
     return files;

@@ -1,6 +1,7 @@
 // `signstim analyze` and `signstim simulate-results` (docs/analysis.md): experiment results
 // back to the paper's figures and tests, and synthetic results with a planted effect to check
 // that analysis against.
+#include "analysis/figure_png.hpp"
 #include "analysis/mixed_models.hpp"
 #include "analysis/report.hpp"
 #include "analysis/report_models.hpp"
@@ -278,6 +279,10 @@ void registerAnalysisCommands(Commands& commands) {
     analyze->add_option("--models-timeout", a->modelsTimeout, "Seconds R may take before it is stopped (default 600)")
         ->check(CLI::Range(1.0, 86400.0));
     analyze->add_option("--rscript", a->rscript, "The Rscript program (default: Rscript on PATH)");
+    analyze->add_option("--dpi", a->dpi,
+                        "Resolution of the figures' PNGs (default 300): a figure is 6.25 inches wide (600 SVG units,\n"
+                        "1/96 inch each), 1875 pixels at 300 dpi; text in DejaVu Sans (fonts-dejavu-core)")
+        ->check(CLI::Range(kMinimumFigureDpi, kMaximumFigureDpi));
     analyze->callback([a] { runAnalyze(*a); });
 
     auto s = std::make_shared<SimulateOptions>();
