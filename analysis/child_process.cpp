@@ -9,6 +9,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <sstream>
+#include <sys/personality.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -31,7 +32,8 @@ bool hasExited(pid_t pid) {
 
 }  // namespace
 
-ChildRun runChild(const std::vector<std::string>& argv, const std::filesystem::path& logFile, double timeoutSeconds) {
+ChildRun runChild(const std::vector<std::string>& argv, const std::filesystem::path& logFile, double timeoutSeconds,
+                  bool fixedAddresses) {
     using Clock = std::chrono::steady_clock;
     ChildRun run;
     std::vector<std::string> args = argv;
@@ -52,7 +54,12 @@ ChildRun runChild(const std::vector<std::string>& argv, const std::filesystem::p
     {
         // Started and registered in one step (as ffmpeg): a signal finds it registered.
         CleanupLock lock;
+        // The child inherits the personality at the spawn; ours is restored right after. Other
+        // children are spawned under this lock too, so none inherits it by accident.
+        const int previous = fixedAddresses ? ::personality(0xffffffff) : -1;
+        if (previous != -1) ::personality(static_cast<unsigned long>(previous) | ADDR_NO_RANDOMIZE);
         rc = ::posix_spawnp(&pid, pointers[0], &actions, &attributes, pointers.data(), environ);
+        if (previous != -1) ::personality(static_cast<unsigned long>(previous));
         if (rc == 0) lock.addChild(pid);
     }
     posix_spawnattr_destroy(&attributes);

@@ -22,6 +22,11 @@ struct ChildRun {
 };
 
 // argv[0] is looked up on PATH (posix_spawnp). Waits at most `timeoutSeconds`.
-ChildRun runChild(const std::vector<std::string>& argv, const std::filesystem::path& logFile, double timeoutSeconds);
+// `fixedAddresses`: the child runs without address-space randomization (Linux personality
+// ADDR_NO_RANDOMIZE, as `setarch -R` does; best effort). lme4's Eigen code takes different
+// vectorized paths at different memory alignments, so the same fit can differ in its last
+// digits from run to run; at fixed addresses it gives the same bytes every time.
+ChildRun runChild(const std::vector<std::string>& argv, const std::filesystem::path& logFile, double timeoutSeconds,
+                  bool fixedAddresses = false);
 
 }  // namespace signstim::analysis

@@ -212,7 +212,7 @@ MixedModels runMixedModels(const ModelInputs& inputs, const ModelRunOptions& opt
     if (!inputs.ratingsCsv.empty()) writeNewFile(dir / "ratings.csv", inputs.ratingsCsv);
     const fs::path output = dir / "models-output.csv";
     const ChildRun run = runChild({options.rscript, "--vanilla", (dir / "models.R").string(), dir.string(), output.string()},
-                                  dir / "r.log", options.timeoutSeconds);
+                                  dir / "r.log", options.timeoutSeconds, /*fixedAddresses=*/true);
     result.seconds = run.seconds;
     if (run.notFound) {
         result.status = ModelStatus::RMissing;

@@ -180,6 +180,10 @@ if (file.exists(ratings_file)) {
           cf[k, 3], NA, cf[k, 4])
     vc <- VarCorr(m2)
     for (g in names(vc)) add("ratings", "random", g, attr(vc[[g]], "stddev")[1], note = "sd (logit scale)")
+    # clmm does not say so itself (glmer does): a random-effect SD at 0 is a singular fit.
+    for (g in names(vc)) if (attr(vc[[g]], "stddev")[1] < 1e-4)
+      add("ratings", "warning", "singular", note = paste0("singular fit: the SD of the ", g,
+                                                          " intercepts is estimated as (nearly) 0"))
     add("ratings", "fit", "logLik", as.numeric(logLik(m2)))
     add("ratings", "fit", "AIC", AIC(m2))
     add("ratings", "fit", "condHess", s2$condHess)

@@ -281,7 +281,7 @@ std::string reportHtml(const StudyAnalysis& a, const ReportInputs& in, const std
     s += methodsHtml(a);
     s += "<h2>Files</h2>\n<p><code>results.csv</code> (descriptives of every cell), <code>tests.csv</code> (every test), "
          "<code>scores.csv</code> (every score tested), <code>summary.json</code> (all of it), <code>figures/</code> (SVG and "
-         "PNG).</p>\n</body>\n</html>\n";
+         "PNG), <code>models/</code> (the mixed models&rsquo; R script, its data and R&rsquo;s output).</p>\n</body>\n</html>\n";
     return s;
 }
 

@@ -3,7 +3,7 @@
 // writes them as one unit (common/atomic_file.hpp TemporaryFolder):
 //   report.html         self-contained: every figure inline (SVG), tables, data checks, methods
 //   figures/NAME.svg    each figure as a vector file
-//   figures/NAME.png    the same drawing rasterized (2 pixels per SVG unit)
+//   figures/NAME.png    the same drawing rasterized at ReportInputs::dpi (analysis/figure_png.hpp)
 //   results.csv         descriptives of every cell of every figure (comparison x version)
 //   tests.csv           every Kruskal–Wallis and Mann–Whitney test with Holm-adjusted p
 //   scores.csv          every score that went into a test (to re-run it elsewhere)

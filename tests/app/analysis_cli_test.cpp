@@ -169,4 +169,40 @@ TEST(AnalysisCli, AColumnMapReadsAnotherProgramsColumnNames) {
     EXPECT_EQ(r.status, 0) << r.output;
 }
 
+// Without Rscript on PATH the analysis runs, says on stderr and in the report that the models
+// were not fitted and how to get them, and exits 0; --models require makes that exit 3 with
+// nothing written. The report holds the script and its data to run elsewhere.
+TEST(AnalysisCli, WithoutRTheReportSaysHowToGetTheModelsAndRequireFails) {
+    const fs::path results = simulate("no-r", "--seed 5");
+    // A PATH without Rscript (an empty folder: signstim is run by its full path).
+    const fs::path bin = freshDir("no-r-bin");
+    fs::create_directories(bin);
+    const fs::path out = freshDir("no-r-report");
+    auto r = runSignstim(analyze(results, out, "--models auto"), Capture::StdoutAndStderr, "PATH=" + shellQuote(bin.string()));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: 'Rscript' was not found on PATH"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("apt install r-base-core r-cran-lme4 r-cran-ordinal"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("mixed models not fitted (R not found)"), std::string::npos) << r.output;
+    const std::string html = readFile(out / "report.html");
+    EXPECT_NE(html.find("The mixed models were not fitted</b> (R not found)"), std::string::npos);
+    EXPECT_TRUE(fs::exists(out / "models/models.R"));
+    EXPECT_TRUE(fs::exists(out / "models/comprehension.csv"));
+    EXPECT_FALSE(fs::exists(out / "models/models-output.csv"));
+    EXPECT_EQ(nlohmann::json::parse(readFile(out / "summary.json"))["mixedModels"]["status"], "R not found");
+
+    const fs::path required = freshDir("no-r-required");
+    r = runSignstim(analyze(results, required, "--models require"), Capture::StdoutAndStderr,
+                    "PATH=" + shellQuote(bin.string()));
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find("the mixed models were not fitted (--models require)"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(required));
+
+    r = runSignstim(analyze(results, required, "--models maybe"));
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("field '--models'"), std::string::npos) << r.output;
+    r = runSignstim(analyze(results, required, "--reference nosuch"));
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("'nosuch' is not a version of this study"), std::string::npos) << r.output;
+}
+
 }  // namespace
