@@ -205,4 +205,29 @@ TEST(AnalysisCli, WithoutRTheReportSaysHowToGetTheModelsAndRequireFails) {
     EXPECT_NE(r.output.find("'nosuch' is not a version of this study"), std::string::npos) << r.output;
 }
 
+// SIGTERM while R runs: signstim ends R (its registered child) and removes the temporary
+// folder with R's data, exits 143, and writes no report. The "R" here is a stand-in that
+// records its process id and sleeps (the real one would do the same, only less predictably).
+TEST(AnalysisCli, SigtermWhileRRunsEndsRAndLeavesNothing) {
+    const fs::path results = simulate("sigterm", "--seed 6");
+    const fs::path dir = freshDir("sigterm-run");
+    const fs::path tmp = dir / "tmp", fake = dir / "slow-Rscript", pidFile = dir / "r.pid";
+    fs::create_directories(tmp);
+    writeFile(fake, "#!/bin/sh\necho $$ > " + shellQuote(pidFile.string()) + "\nexec sleep 60\n");
+    fs::permissions(fake, fs::perms::owner_all);
+    const fs::path out = dir / "report";
+    // signstim in the background; once R has started, SIGTERM to signstim alone.
+    const std::string then = " & pid=$!; i=0; while [ ! -s " + shellQuote(pidFile.string()) +
+                             " ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i+1)); done; kill -TERM $pid; wait $pid; echo status=$?";
+    const auto r = runSignstim(analyze(results, out, "--models require --rscript " + shellQuote(fake.string())) + then,
+                               Capture::StdoutAndStderr, "TMPDIR=" + shellQuote(tmp.string()));
+    EXPECT_NE(r.output.find("status=143"), std::string::npos) << r.output;
+    const std::string pid = readFile(pidFile);
+    ASSERT_FALSE(pid.empty());
+    EXPECT_NE(signstim::test::runShell("kill -0 " + pid.substr(0, pid.find('\n')) + " 2>/dev/null").status, 0)
+        << "R's stand-in still runs";
+    EXPECT_TRUE(fs::is_empty(tmp)) << "the temporary folder with R's data was left";
+    EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
