@@ -1,6 +1,6 @@
 #pragma once
 // The paper's figures from an analysis (docs/analysis.md, "Figures"), as drawings
-// (renderer/drawing.hpp) that become SVG (analysis/svg.hpp) and PNG (rasterizeDrawing):
+// (renderer/drawing.hpp) that become SVG (analysis/svg.hpp) and PNG (analysis/figure_png.hpp):
 //  - fig6-comprehension: phase-1 accuracy per version, box plots of the participants' scores
 //    (Figure 6 of the paper);
 //  - fig7-likert: phase-2 ratings per version, box plots (Figure 7);
@@ -19,8 +19,9 @@
 
 namespace signstim::analysis {
 
-// The PNG's resolution: 2 pixels per SVG unit (a 600-unit figure is 1200 pixels wide). The
-// layout measures text at this scale, so the PNG's label font fits where the SVG's text goes.
+// The scale at which the layout measures text: the renderer's label font at 2 pixels per unit,
+// whose cells are wider than the vector fonts of the SVG (the viewer's sans-serif) and of the
+// PNG (DejaVu Sans through FreeType, analysis/figure_png.hpp), so the text fits in both.
 inline constexpr double kFigurePixelsPerUnit = 2.0;
 
 struct Figure {

@@ -1,10 +1,11 @@
 #include "analysis/report.hpp"
 
+#include "analysis/figure_png.hpp"
+#include "analysis/report_models.hpp"
 #include "analysis/svg.hpp"
 #include "stimuli/study/study_exports.hpp"
 #include "analysis/text_format.hpp"
 #include "common/number_format.hpp"
-#include "renderer/image_io.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -172,6 +173,7 @@ figure{margin:1em 0 1.6em}figure svg{width:100%;max-width:860px;height:auto;bord
 .swatch{display:inline-block;width:.8em;height:.8em;margin-right:.35em;vertical-align:-.05em}
 .v-point{background:#0072b2}.v-vector{background:#e69f00}.v-animator{background:#009e73}.v-uninflected{background:#cc79a7}
 ul.checks{font-family:monospace;font-size:.85em}code{font-size:.92em}
+.warn{background:#fff0f0;border-left:4px solid #b00020;padding:6px 12px;margin:.6em 0;font-size:.92em}.warn ul{margin:.3em 0}
 )";
 
 std::string methodsHtml(const StudyAnalysis& a) {
@@ -204,7 +206,7 @@ std::string methodsHtml(const StudyAnalysis& a) {
            "The design is within subjects (every participant contributes to every version; in phase 2 each participant "
            "rates several sentences), so the scores are not independent: a participant&rsquo;s overall level is shared by "
            "the versions, which makes these tests conservative for differences between versions, and phase-2 N counts ratings, "
-           "not people. A Friedman test or a mixed model would model the repeated measures; they are not computed here.</li>\n"
+           "not people. The <a href=\"#models\">mixed models</a> model the repeated measures.</li>\n"
            "<li>Distribution functions from Boost.Math; all numbers in results.csv, tests.csv and summary.json to 6 "
            "significant digits.</li>\n</ul>\n";
 }
@@ -231,6 +233,7 @@ std::string reportHtml(const StudyAnalysis& a, const ReportInputs& in, const std
     if (const Figure* f = findFigure(figures, "fig6-comprehension")) {
         s += figureHtml(*f) + descriptivesTable(a, a.comprehension, true) + "<p>" + kruskalSentence(a.comprehension, a.alpha) +
              "</p>\n" + pairsTable(a, {&a.comprehension}, false);
+        if (in.models) s += modelPhaseHtml(a, a.comprehension, *in.models, "comprehension");
     } else {
         s += "<p>No phase-1 results.</p>\n";
     }
@@ -238,6 +241,7 @@ std::string reportHtml(const StudyAnalysis& a, const ReportInputs& in, const std
     if (const Figure* f = findFigure(figures, "fig7-likert")) {
         s += figureHtml(*f) + descriptivesTable(a, a.likert, false) + "<p>" + kruskalSentence(a.likert, a.alpha) + "</p>\n" +
              pairsTable(a, {&a.likert}, false);
+        if (in.models) s += modelPhaseHtml(a, a.likert, *in.models, "ratings");
     } else {
         s += "<p>No phase-2 results.</p>\n";
     }
@@ -274,10 +278,11 @@ std::string reportHtml(const StudyAnalysis& a, const ReportInputs& in, const std
         for (const std::string& w : in.warnings) s += "<li>" + h(w) + "</li>\n";
         s += "</ul>\n";
     }
+    if (in.models) s += modelsSectionHtml(*in.models);
     s += methodsHtml(a);
     s += "<h2>Files</h2>\n<p><code>results.csv</code> (descriptives of every cell), <code>tests.csv</code> (every test), "
          "<code>scores.csv</code> (every score tested), <code>summary.json</code> (all of it), <code>figures/</code> (SVG and "
-         "PNG).</p>\n</body>\n</html>\n";
+         "PNG), <code>models/</code> (the mixed models&rsquo; R script, its data and R&rsquo;s output).</p>\n</body>\n</html>\n";
     return s;
 }
 
@@ -354,14 +359,18 @@ std::vector<ReportFile> analysisReport(const StudyAnalysis& a, const ReportInput
                               {"png", "figures/" + f.name + ".png"}});
     }
     summary["figures"] = figureList;
+    if (in.models) summary["mixedModels"] = modelsJson(*in.models);
     files.push_back({"summary.json", summary.dump(2) + "\n"});
 
+    if (in.modelInputs) {
+        files.push_back({"models/models.R", in.modelInputs->script});
+        if (!in.modelInputs->comprehensionCsv.empty()) files.push_back({"models/comprehension.csv", in.modelInputs->comprehensionCsv});
+        if (!in.modelInputs->ratingsCsv.empty()) files.push_back({"models/ratings.csv", in.modelInputs->ratingsCsv});
+    }
+    if (in.models && in.models->ran()) files.push_back({"models/models-output.csv", in.models->output});
     for (const Figure& f : figures) {
         files.push_back({"figures/" + f.name + ".svg", svgDocument(f.drawing)});
-        render::ImageWriteOptions png;
-        png.pngCompression = 6;
-        png.alpha = false;
-        const std::vector<std::uint8_t> bytes = render::encodePng(render::rasterizeDrawing(f.drawing, kFigurePixelsPerUnit), png);
+        const std::vector<std::uint8_t> bytes = figurePng(f.drawing, in.dpi > 0 ? in.dpi : kDefaultFigureDpi);
         files.push_back({"figures/" + f.name + ".png", std::string(bytes.begin(), bytes.end())});
     }
     return files;

@@ -1,7 +1,10 @@
 // `signstim analyze` and `signstim simulate-results` (docs/analysis.md): experiment results
 // back to the paper's figures and tests, and synthetic results with a planted effect to check
 // that analysis against.
+#include "analysis/figure_png.hpp"
+#include "analysis/mixed_models.hpp"
 #include "analysis/report.hpp"
+#include "analysis/report_models.hpp"
 #include "analysis/results_file.hpp"
 #include "analysis/simulation.hpp"
 #include "analysis/study_analysis.hpp"
@@ -34,6 +37,11 @@ struct AnalyzeOptions {
     double alpha = 0.05;
     bool strict = false;
     bool quiet = false;
+    std::string models = "auto";  // auto, require, none
+    std::string reference;
+    double modelsTimeout = 600;
+    std::string rscript = "Rscript";
+    double dpi = 0;
 };
 
 struct SimulateOptions {
@@ -49,7 +57,9 @@ struct SimulateOptions {
 // Every file an analysis report consists of: a report folder holding anything else is not
 // replaced (it might be someone's work).
 bool isReportFile(const fs::path& relative) {
-    static const std::set<std::string> top = {"report.html", "results.csv", "tests.csv", "scores.csv", "summary.json"};
+    static const std::set<std::string> top = {"report.html", "results.csv", "tests.csv", "scores.csv", "summary.json",
+                                              "models", "models/models.R", "models/comprehension.csv", "models/ratings.csv",
+                                              "models/models-output.csv", "models/models-rerun.csv"};
     const std::string text = relative.generic_string();
     if (top.count(text)) return true;
     if (text == "figures") return true;
@@ -113,6 +123,8 @@ std::string meansSummary(const StudyAnalysis& a, const Comparison& c, bool asPer
 
 void runAnalyze(const AnalyzeOptions& o) {
     if (!(o.alpha > 0.0 && o.alpha <= 0.5)) throw commandLineError("--alpha", rangeMessage(0.0, 0.5, "", o.alpha) + " (exclusive of 0)");
+    if (o.models != "auto" && o.models != "require" && o.models != "none")
+        throw commandLineError("--models", "expected auto, require or none, got '" + o.models + "'");
     const fs::path out = withoutTrailingSeparators(o.out);
     static const std::set<std::string> fileExtensions = {".html", ".htm", ".csv", ".json", ".svg", ".png", ".pdf", ".txt"};
     if (fileExtensions.count(out.extension().string()))
@@ -133,6 +145,22 @@ void runAnalyze(const AnalyzeOptions& o) {
     AnalysisSettings settings;
     settings.alpha = o.alpha;
     const StudyAnalysis analysis = analyzeStudy(study, results, settings);
+
+    // The mixed models (docs/analysis.md, "Mixed models"): R fits them when it is there; the
+    // script and its data go into the report either way.
+    const ModelInputs modelData = modelInputs(study, results, modelReference(study, o.reference));
+    MixedModels models;
+    models.reference = modelData.reference;
+    models.message = "not requested (--models none)";
+    if (o.models != "none") {
+        ModelRunOptions run;
+        run.rscript = o.rscript;
+        run.timeoutSeconds = o.modelsTimeout;
+        models = runMixedModels(modelData, run);
+        if (!models.ran() && o.models == "require")
+            throw EnvironmentError("the mixed models were not fitted (--models require): " + models.message);
+        if (!models.ran() && !o.quiet) std::fprintf(stderr, "signstim: warning: %s\n", models.message.c_str());
+    }
     ReportInputs inputs;
     inputs.studyTitle = study.title;
     inputs.designHash = study.designHash;
@@ -141,6 +169,9 @@ void runAnalyze(const AnalyzeOptions& o) {
     inputs.columnMapName = o.columns.empty() ? "" : fs::path(o.columns).filename().string();
     inputs.results = &results;
     inputs.warnings = warnings;
+    inputs.modelInputs = &modelData;
+    inputs.models = &models;
+    inputs.dpi = o.dpi;
     const std::vector<ReportFile> files = analysisReport(analysis, inputs);
 
     TemporaryFolder folder(out);
@@ -164,6 +195,7 @@ void runAnalyze(const AnalyzeOptions& o) {
                 std::printf("  phase %d: %s vs %s: Holm-adjusted %s, r = %s\n", c->phase, analysis.versions[p.first].c_str(),
                             analysis.versions[p.second].c_str(), formatP(p.pHolm).c_str(),
                             formatFixed(p.test.rankBiserial, 2).c_str());
+    std::printf("  %s\n", modelsSummaryLine(models).c_str());
 }
 
 // "animator=0.9,point=0.7" -> per-version values over `values` (study order).
@@ -221,8 +253,13 @@ void registerAnalysisCommands(Commands& commands) {
         "analyze",
         "The paper's analysis of a study's results (docs/analysis.md): comprehension accuracy (phase 1) and\n"
         "side-by-side ratings (phase 2) per version and per verb, Kruskal-Wallis and pairwise Mann-Whitney U\n"
-        "tests (Holm-adjusted) with effect sizes, figures like the paper's Figures 6-8 (SVG and PNG), tables,\n"
-        "and one self-contained report.html.\n"
+        "tests (Holm-adjusted) with effect sizes, figures like the paper's Figures 6-8 (SVG, and PNG at --dpi),\n"
+        "tables, and one self-contained report.html. Beside the paper's tests, mixed models through R when\n"
+        "Rscript is found (R with lme4 and ordinal; Debian: apt install r-base-core r-cran-lme4 r-cran-ordinal):\n"
+        "a logistic GLMM of comprehension and a cumulative-link mixed model of the ratings, with participant\n"
+        "and story/sentence random intercepts. Without R the report says how to get them (exit status\n"
+        "unchanged; --models require makes it exit 3). REPORT/models/ holds the R script and its data:\n"
+        "rerun them with Rscript REPORT/models/models.R.\n"
         "RESULTS: one CSV per participant (signstim-results_P07.csv), or folders of them.\n"
         "Every answer is re-scored from the study's answer keys and every rating unmapped from its panel code;\n"
         "disagreements with the file's own columns are warnings (--strict: errors).\n"
@@ -237,6 +274,20 @@ void registerAnalysisCommands(Commands& commands) {
     analyze->add_option("--alpha", a->alpha, "Significance level (default 0.05)");
     analyze->add_flag("--strict", a->strict, "Treat data warnings (scoring that disagrees, missing answers or trials) as errors");
     analyze->add_flag("--quiet", a->quiet, "Do not list data warnings on stderr (the report lists them)");
+    analyze->add_option("--models", a->models,
+                        "Mixed models through R (lme4 GLMM of comprehension, ordinal CLMM of ratings): auto (default: fit\n"
+                        "them when Rscript is found, else the report says how to get them), require (no R, missing\n"
+                        "packages or R's failure: exit 3), none (not fitted). The script and its data go into\n"
+                        "REPORT/models/ either way (rerun: Rscript REPORT/models/models.R)");
+    analyze->add_option("--reference", a->reference,
+                        "The version the models' estimates are relative to (default uninflected, else the first version)");
+    analyze->add_option("--models-timeout", a->modelsTimeout, "Seconds R may take before it is stopped (default 600)")
+        ->check(CLI::Range(1.0, 86400.0));
+    analyze->add_option("--rscript", a->rscript, "The Rscript program (default: Rscript on PATH)");
+    analyze->add_option("--dpi", a->dpi,
+                        "Resolution of the figures' PNGs (default 300): a figure is 6.25 inches wide (600 SVG units,\n"
+                        "1/96 inch each), 1875 pixels at 300 dpi; text in DejaVu Sans (fonts-dejavu-core)")
+        ->check(CLI::Range(kMinimumFigureDpi, kMaximumFigureDpi));
     analyze->callback([a] { runAnalyze(*a); });
 
     auto s = std::make_shared<SimulateOptions>();

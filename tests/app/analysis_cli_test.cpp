@@ -61,9 +61,10 @@ fs::path simulate(const std::string& name, const std::string& flags = "") {
     return out;
 }
 
+// Without the mixed models unless `flags` asks for them (R takes seconds; its tests are below).
 std::string analyze(const fs::path& results, const fs::path& out, const std::string& flags = "") {
     return "analyze " + shellQuote(results.string()) + " --study " + shellQuote(smallStudy().string()) + " --out " +
-           shellQuote(out.string()) + " " + flags;
+           shellQuote(out.string()) + " " + (flags.find("--models") == std::string::npos ? "--models none " : "") + flags;
 }
 
 TEST(AnalysisCli, SyntheticResultsOfARenderedStudyBecomeAReportWithTheSameBytesTwice) {
@@ -84,7 +85,7 @@ TEST(AnalysisCli, SyntheticResultsOfARenderedStudyBecomeAReportWithTheSameBytesT
         EXPECT_EQ(readFile(e.path()), readFile(second / relative)) << relative;
         EXPECT_EQ(relative.string().find(".tmp"), std::string::npos) << relative;
     }
-    EXPECT_EQ(files, 5u + 2u * 4u);  // report, 3 CSVs, JSON; 4 figures as SVG and PNG
+    EXPECT_EQ(files, 5u + 2u * 4u + 3u);  // report, 3 CSVs, JSON; 4 figures as SVG and PNG; models.R and its 2 CSVs
     const nlohmann::json summary = nlohmann::json::parse(readFile(first / "summary.json"));
     EXPECT_EQ(summary["study"]["participants"], 4);
     EXPECT_TRUE(summary["synthetic"].get<bool>());
@@ -166,6 +167,67 @@ TEST(AnalysisCli, AColumnMapReadsAnotherProgramsColumnNames) {
     EXPECT_NE(r.output.find("field 'participant': this column is missing from the header"), std::string::npos) << r.output;
     r = runSignstim(analyze(renamed, freshDir("mapped-report"), "--columns " + shellQuote(map.string())));
     EXPECT_EQ(r.status, 0) << r.output;
+}
+
+// Without Rscript on PATH the analysis runs, says on stderr and in the report that the models
+// were not fitted and how to get them, and exits 0; --models require makes that exit 3 with
+// nothing written. The report holds the script and its data to run elsewhere.
+TEST(AnalysisCli, WithoutRTheReportSaysHowToGetTheModelsAndRequireFails) {
+    const fs::path results = simulate("no-r", "--seed 5");
+    // A PATH without Rscript (an empty folder: signstim is run by its full path).
+    const fs::path bin = freshDir("no-r-bin");
+    fs::create_directories(bin);
+    const fs::path out = freshDir("no-r-report");
+    auto r = runSignstim(analyze(results, out, "--models auto"), Capture::StdoutAndStderr, "PATH=" + shellQuote(bin.string()));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: 'Rscript' was not found on PATH"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("apt install r-base-core r-cran-lme4 r-cran-ordinal"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("mixed models not fitted (R not found)"), std::string::npos) << r.output;
+    const std::string html = readFile(out / "report.html");
+    EXPECT_NE(html.find("The mixed models were not fitted</b> (R not found)"), std::string::npos);
+    EXPECT_TRUE(fs::exists(out / "models/models.R"));
+    EXPECT_TRUE(fs::exists(out / "models/comprehension.csv"));
+    EXPECT_FALSE(fs::exists(out / "models/models-output.csv"));
+    EXPECT_EQ(nlohmann::json::parse(readFile(out / "summary.json"))["mixedModels"]["status"], "R not found");
+
+    const fs::path required = freshDir("no-r-required");
+    r = runSignstim(analyze(results, required, "--models require"), Capture::StdoutAndStderr,
+                    "PATH=" + shellQuote(bin.string()));
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find("the mixed models were not fitted (--models require)"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(required));
+
+    r = runSignstim(analyze(results, required, "--models maybe"));
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("field '--models'"), std::string::npos) << r.output;
+    r = runSignstim(analyze(results, required, "--reference nosuch"));
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("'nosuch' is not a version of this study"), std::string::npos) << r.output;
+}
+
+// SIGTERM while R runs: signstim ends R (its registered child) and removes the temporary
+// folder with R's data, exits 143, and writes no report. The "R" here is a stand-in that
+// records its process id and sleeps (the real one would do the same, only less predictably).
+TEST(AnalysisCli, SigtermWhileRRunsEndsRAndLeavesNothing) {
+    const fs::path results = simulate("sigterm", "--seed 6");
+    const fs::path dir = freshDir("sigterm-run");
+    const fs::path tmp = dir / "tmp", fake = dir / "slow-Rscript", pidFile = dir / "r.pid";
+    fs::create_directories(tmp);
+    writeFile(fake, "#!/bin/sh\necho $$ > " + shellQuote(pidFile.string()) + "\nexec sleep 60\n");
+    fs::permissions(fake, fs::perms::owner_all);
+    const fs::path out = dir / "report";
+    // signstim in the background; once R has started, SIGTERM to signstim alone.
+    const std::string then = " & pid=$!; i=0; while [ ! -s " + shellQuote(pidFile.string()) +
+                             " ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i+1)); done; kill -TERM $pid; wait $pid; echo status=$?";
+    const auto r = runSignstim(analyze(results, out, "--models require --rscript " + shellQuote(fake.string())) + then,
+                               Capture::StdoutAndStderr, "TMPDIR=" + shellQuote(tmp.string()));
+    EXPECT_NE(r.output.find("status=143"), std::string::npos) << r.output;
+    const std::string pid = readFile(pidFile);
+    ASSERT_FALSE(pid.empty());
+    EXPECT_NE(signstim::test::runShell("kill -0 " + pid.substr(0, pid.find('\n')) + " 2>/dev/null").status, 0)
+        << "R's stand-in still runs";
+    EXPECT_TRUE(fs::is_empty(tmp)) << "the temporary folder with R's data was left";
+    EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace
