@@ -166,7 +166,8 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
         s.listing.draftAnimator.erase(std::unique(s.listing.draftAnimator.begin(), s.listing.draftAnimator.end()),
                                       s.listing.draftAnimator.end());
         if (!s.listing.draftAnimator.empty() && !options.allowDraftAnimator)
-            throw InputError(s.listing.draftAnimator.front(), 0, "/draft",
+            throw InputError(s.listing.draftAnimator.front(), readJsonFile(s.listing.draftAnimator.front()).lineAt("/draft"),
+                             "/draft",
                              std::to_string(s.listing.draftAnimator.size()) + " animator file" +
                                  (s.listing.draftAnimator.size() == 1 ? " is a draft" : "s are drafts") +
                                  " (\"draft\": true), starting points no animator has worked on; finish them and delete "

@@ -45,7 +45,7 @@ TimelineSources StoryWorld::sources(const Story& story) const {
             VerbPerformance p = synthesizeVerb(VerbSources{&verbs, &models, scenes / "animator", &shapes}, verb, version,
                                                subject, object);
             if (p.draft && !allowDraftAnimator)
-                throw InputError(p.handshapeFile, 0, "/draft",
+                throw InputError(p.handshapeFile, readJsonFile(p.handshapeFile).lineAt("/draft"), "/draft",
                                  "a draft (\"draft\": true): have an animator work on it and delete \"draft\", or pass "
                                  "--allow-draft-animator to use it as it is");
             return p;
