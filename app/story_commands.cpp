@@ -63,7 +63,14 @@ void reportClearance(const StoryWorld& world, const Story& story, const Timeline
     std::printf("closest approach of the hands (mm; negative: they overlap), every frame at 30 fps:\n");
     std::vector<std::string> warnings;
     for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
-        const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(story, v, world.sources(story), timing));
+        std::optional<Timeline> built;
+        try {
+            built = buildTimeline(story, v, world.sources(story), timing);
+        } catch (const MissingAnimatorFiles&) {
+            std::printf("  %s: not checked (keyframe files missing)\n", toString(v).c_str());
+            continue;
+        }
+        const TimelineClip clip(signer.rig(), signer.shapes(), std::move(*built));
         const Timeline& t = clip.timeline();
         const ClearanceSummary summary = checkClearance(t, clearanceFrames(signer.rig(), clip));
         std::printf("  %s: at transitions %s; in signs %s; in signs where they touch %s\n", toString(v).c_str(),
@@ -138,7 +145,9 @@ void registerStoryCommands(Commands& commands) {
     story->add_option("--rate", o->rate, "Signing speed relative to citation timing (0.1 to 4)")->capture_default_str();
     story->add_option("--scenes", o->scenesDir,
                       "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ installed beside signstim)");
-    story->add_option("--lexicon", o->lexiconFile, "Lexicon: a file or a folder of .json files (default: SCENES/lexicon/)");
+    story->add_option("--lexicon", o->lexiconFile,
+                      "A lab's own lexicon (a file or a folder of .json files) on top of SCENES/lexicon/: its signs are "
+                      "added, and replace default signs of the same gloss (--check lists them)");
     story->add_flag("--quiet", o->quiet, "No progress on stderr");
     story->callback([o] {
         requireInRange(o->rate, 0.1, 4.0, "--rate");
@@ -153,15 +162,31 @@ void registerStoryCommands(Commands& commands) {
         if (o->check) {
             double seconds = 0.0;
             int verbs = 0;
+            std::vector<std::string> missingAnimator;
             for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
-                const Timeline t = buildTimeline(story, v, world.sources(story), timing);
-                seconds = t.durationSeconds;
-                verbs = 0;
-                for (const TimelineSpan& span : t.spans) verbs += span.kind == SpanKind::Verb;
+                try {
+                    const Timeline t = buildTimeline(story, v, world.sources(story), timing);
+                    seconds = t.durationSeconds;
+                    verbs = 0;
+                    for (const TimelineSpan& span : t.spans) verbs += span.kind == SpanKind::Verb;
+                } catch (const MissingAnimatorFiles& e) {
+                    missingAnimator = e.files();  // only the animator version needs them
+                }
             }
-            std::printf("%s: ok: \"%s\", %zu characters, %zu sentences, %d verbs, %zu questions, %.1f s in every version\n",
-                        o->file.c_str(), story.title.c_str(), story.characters.size(),
-                        story.sentences.size(), verbs, story.questions.size(), seconds);
+            std::printf("%s: ok: \"%s\", %zu characters, %zu sentences, %d verbs, %zu questions, %.1f s in every version%s\n",
+                        o->file.c_str(), story.title.c_str(), story.characters.size(), story.sentences.size(), verbs,
+                        story.questions.size(), seconds, missingAnimator.empty() ? "" : " but animator");
+            if (!missingAnimator.empty()) {
+                std::printf("warning: the animator version cannot be rendered: %zu keyframe file%s missing (point, vector "
+                            "and uninflected do not need them); `signstim animator draft %s` writes starting files:\n",
+                            missingAnimator.size(), missingAnimator.size() == 1 ? " is" : "s are", o->file.c_str());
+                for (const std::string& f : missingAnimator) std::printf("  %s\n", f.c_str());
+            }
+            for (const std::string& f : world.draftAnimatorFiles(story))
+                std::printf("note: %s is a draft (\"draft\": true): a study refuses it unless --allow-draft-animator\n", f.c_str());
+            for (const std::string& note : world.copiedDraftNotes(story)) std::printf("warning: %s\n", note.c_str());
+            for (const std::string& note : world.lexiconOverrideNotes()) std::printf("note: %s\n", note.c_str());
+            for (const std::string& note : world.fingerspellingNotes(story)) std::printf("note: %s\n", note.c_str());
             std::fflush(stdout);
             reportClearance(world, story, timing);
             return;

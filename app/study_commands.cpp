@@ -34,6 +34,7 @@ struct StudyCommandOptions {
     std::string device;
     std::string scenesDir;
     std::string lexicon;
+    bool allowDraftAnimator = false;
     bool quiet = false;
     bool force = false;
 };
@@ -49,6 +50,7 @@ StudyRunOptions runOptions(const StudyCommandOptions& o) {
     r.device = o.device;
     r.scenesDir = o.scenesDir;
     r.lexicon = o.lexicon;
+    r.allowDraftAnimator = o.allowDraftAnimator;
     r.quiet = o.quiet;
     r.force = o.force;
     std::tie(r.shardIndex, r.shardCount) = o.shard.empty() ? shardFromEnvironment() : parseShard(o.shard);
@@ -122,7 +124,12 @@ void registerStudyCommands(Commands& commands) {
     study->add_option("--device", o->device, "Vulkan device: name substring or index (see `signstim devices`)");
     study->add_option("--scenes", o->scenesDir,
                       "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ installed beside signstim)");
-    study->add_option("--lexicon", o->lexicon, "Lexicon: a file or a folder of .json files (default: SCENES/lexicon/)");
+    study->add_option("--lexicon", o->lexicon,
+                      "A lab's own lexicon (a file or a folder of .json files) on top of SCENES/lexicon/: its signs are "
+                      "added, and replace default signs of the same gloss (--check lists them)");
+    study->add_flag("--allow-draft-animator", o->allowDraftAnimator,
+                    "Use animator files marked \"draft\" (starting points from `signstim animator draft`); the "
+                    "manifest and the review page list them");
     study->add_flag("--quiet", o->quiet, "No progress on stderr");
     study->add_flag("--force", o->force,
                     "Write into an --out folder that holds other files (they are kept: nothing is deleted that signstim did "

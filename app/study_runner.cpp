@@ -93,6 +93,25 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
     s.pngFrames = options.pngFrames || study.pngFrames;
     s.experiment = options.experiment.empty() ? study.experiment : options.experiment;  // may still be "" or "none"
     s.listing = planStudy(s.study, s.stories, s.phase2 ? &*s.phase2 : nullptr, SIGNSTIM_VERSION, s.pngFrames);
+    // Draft animator files (issue 22): refused unless --allow-draft-animator; listed either way.
+    s.world->allowDraftAnimator = options.allowDraftAnimator;
+    if (std::count(s.study.versions.begin(), s.study.versions.end(), VerbVersion::Animator) > 0) {
+        for (const Story& story : s.stories)
+            for (const std::string& f : s.world->draftAnimatorFiles(story)) s.listing.draftAnimator.push_back(f);
+        if (s.phase2)
+            for (const std::string& f : s.world->draftAnimatorFiles(*s.phase2)) s.listing.draftAnimator.push_back(f);
+        std::sort(s.listing.draftAnimator.begin(), s.listing.draftAnimator.end());
+        s.listing.draftAnimator.erase(std::unique(s.listing.draftAnimator.begin(), s.listing.draftAnimator.end()),
+                                      s.listing.draftAnimator.end());
+        if (!s.listing.draftAnimator.empty() && !options.allowDraftAnimator)
+            throw InputError(s.listing.draftAnimator.front(), readJsonFile(s.listing.draftAnimator.front()).lineAt("/draft"),
+                             "/draft",
+                             std::to_string(s.listing.draftAnimator.size()) + " animator file" +
+                                 (s.listing.draftAnimator.size() == 1 ? " is a draft" : "s are drafts") +
+                                 " (\"draft\": true), starting points no animator has worked on; finish them and delete "
+                                 "\"draft\", or pass --allow-draft-animator (the manifest and review page then list them)");
+        for (std::string& f : s.listing.draftAnimator) f = fs::path(f).filename().string();  // as in scenes/animator/
+    }
     // The plan must not depend on where the study file was named from (shards, merges).
     s.listing.studyFile = fs::path(study.file).filename().string();
     s.listing.size = std::to_string(s.settings.width) + "x" + std::to_string(s.settings.height);
@@ -101,7 +120,8 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
 
     const fs::path& data = s.world->scenes;
     s.dataHash = studyDataHash(SIGNSTIM_VERSION, s.settings, s.pngFrames, s.listing.versions,
-                               studyInputs(data, s.world->lexiconPath, signer::defaultAvatarPath(data)));
+                               studyInputs(data, s.world->lexiconPath, s.world->labLexiconPath,
+                                           signer::defaultAvatarPath(data)));
     s.units = studyUnits(s.listing);
     return s;
 }
@@ -189,10 +209,13 @@ void checkStudy(const StudyRunOptions& options) {
     LoadedStudy s = loadStudy(options);
     useExperiment(s, "");
     double storySeconds = 0.0, likertSeconds = 0.0;
+    std::vector<std::string> notes = s.world->lexiconOverrideNotes();  // authoring notes (story_world.hpp)
     for (const StudyUnit& unit : s.units) {
         const Story story = unitStory(s, unit);
         const std::vector<Timeline> timelines = unitTimelines(s, story);
         (unit.story ? storySeconds : likertSeconds) += timelines.front().durationSeconds;
+        if (unit.story)
+            for (std::string& note : s.world->fingerspellingNotes(story)) notes.push_back(std::move(note));
     }
     const StudyDesignSpec spec = s.study.designSpec();
     std::printf("%s: ok: \"%s\"\n  %zu stories x %zu versions, %zu participants in %zu groups (each sees every story once, "
@@ -201,6 +224,7 @@ void checkStudy(const StudyRunOptions& options) {
                 s.study.file.c_str(), s.study.title.c_str(), spec.stories, spec.versions, spec.participants, spec.versions,
                 spec.stories / spec.versions, spec.stories / spec.versions == 1 ? "" : "s", spec.likertTrials, storySeconds, likertSeconds,
                 s.listing.designHash.substr(0, 12).c_str());
+    for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
 }
 
 StudyRunReport runStudy(const StudyRunOptions& options) {

@@ -26,6 +26,7 @@ struct StudyRunOptions {
     std::string device;
     std::string scenesDir;
     std::string lexicon;
+    bool allowDraftAnimator = false;  // animator files marked "draft" may be used (listed as such)
     bool quiet = false;
     bool force = false;               // write into a folder that holds other files (never deleting them)
 };

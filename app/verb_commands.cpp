@@ -16,8 +16,13 @@
 #include "stimuli/verbs/verb_models.hpp"
 #include "stimuli/verbs/verb_synthesis.hpp"
 #include "stimuli/verbs/verbs.hpp"
+#include "stimuli/story/story_world.hpp"
+#include "stimuli/study/study.hpp"
 
 #include <cstdio>
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -221,6 +226,69 @@ void registerVerbCommands(Commands& commands) {
             const Corpus corpus = generateReferenceCorpus(performer, verbs);
             writeFileAtomic(o->outPath, formatCorpus(corpus, verbs));
             std::printf("wrote %zu synthetic examples -> %s\n", corpus.examples.size(), o->outPath.c_str());
+        });
+    }
+    // ---- animator draft ---------------------------------------------------------------------
+    {
+        struct DraftOptions {
+            std::string file, outDir, scenesDir, lexicon;
+        };
+        auto o = std::make_shared<DraftOptions>();
+        CLI::App* animator = commands.root.add_subcommand("animator", "Animator keyframe files (docs/verbs.md)");
+        animator->require_subcommand(1);
+        CLI::App* draft = animator->add_subcommand(
+            "draft",
+            "Write a starting animator file for every verb instance of a story or study that has none in\n"
+            "SCENES/animator/: the point model's keyframes, marked \"draft\": true. An animator edits them and\n"
+            "deletes the mark; a study refuses drafts unless --allow-draft-animator. Existing files are\n"
+            "never overwritten. Example: signstim animator draft my-story.json");
+        draft->add_option("FILE", o->file, "A story or a study file (JSON)")->required();
+        draft->add_option("--out", o->outDir, "Where to write them (default: SCENES/animator/)");
+        draft->add_option("--scenes", o->scenesDir,
+                          "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ installed beside signstim)");
+        draft->add_option("--lexicon", o->lexicon, "A lab's own lexicon on top of SCENES/lexicon/ (as for `story`)");
+        draft->callback([o] {
+            const StoryWorld world(o->scenesDir, o->lexicon);
+            std::vector<std::filesystem::path> storyFiles;
+            const JsonSource source = readJsonFile(o->file);
+            if (source.root.is_object() && source.root.value("format", "") == "signstim-study") {
+                const StudyFile study = loadStudyFile(o->file);
+                for (const StudyFile::StoryEntry& entry : study.stories) storyFiles.push_back(entry.path);
+                if (!study.phase2Story.path.empty()) storyFiles.push_back(study.phase2Story.path);
+            } else {
+                storyFiles.push_back(o->file);
+            }
+            const std::filesystem::path existing = world.scenes / "animator";
+            const std::filesystem::path out = o->outDir.empty() ? existing : std::filesystem::path(o->outDir);
+            const VerbSources sources{&world.verbs, &world.models, existing, &world.shapes};
+            std::vector<std::string> done;
+            std::size_t written = 0, present = 0;
+            for (const std::filesystem::path& file : storyFiles) {
+                const Story story = world.loadStory(file);
+                for (const StorySentence& sentence : story.sentences)
+                    for (const StoryItem& item : sentence.items) {
+                        if (item.kind != StoryItemKind::Verb) continue;
+                        const VerbDefinition& verb = world.verbs.get(item.gloss);
+                        const double subject =
+                            item.subject >= 0 ? story.characters[static_cast<std::size_t>(item.subject)].position : 0.0;
+                        const double object = story.characters[static_cast<std::size_t>(item.object)].position;
+                        const std::string name = animatorFileName(verb, subject, object);
+                        if (std::find(done.begin(), done.end(), name) != done.end()) continue;
+                        done.push_back(name);
+                        if (std::filesystem::exists(existing / name) || std::filesystem::exists(out / name)) {
+                            ++present;
+                            continue;
+                        }
+                        std::error_code ec;
+                        std::filesystem::create_directories(out, ec);
+                        if (ec) throw IoError(out.string(), "cannot create the folder", ec.value());
+                        writeFileAtomic(out / name, formatAnimatorDraft(sources, item.gloss, subject, object));
+                        std::printf("%s\n", (out / name).string().c_str());
+                        ++written;
+                    }
+            }
+            std::printf("%zu draft%s written, %zu verb instance%s already had a file\n", written, written == 1 ? "" : "s",
+                        present, present == 1 ? "" : "s");
         });
     }
 }

@@ -6,6 +6,7 @@
 #include "stimuli/scenes_path.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -21,6 +22,16 @@ using nlohmann::json;
 constexpr std::array<std::string_view, 4> kFingerKeys = {"index", "middle", "ring", "little"};
 
 std::string jsonKey(std::string_view s) { return "\"" + std::string(s) + "\""; }
+
+// Every value of ASL-LEX 2.0's dominant-handshape column Handshape.2.0 (2,723 signs; Caselli et al.
+// 2017, Sehyr et al. 2021; docs/hand.md), spelled as ASL-LEX spells them, so that a label the
+// dataset does not use (a capital letter, bent_B for flat_b) is caught when the file is read.
+constexpr std::array<std::string_view, 58> kAslLexHandshapes = {
+    "1", "3", "4", "5", "7", "8", "a", "baby_o", "bent_1", "bent_l", "bent_v", "c", "closed_b", "closed_e",
+    "curved_1", "curved_4", "curved_5", "curved_h", "curved_l", "curved_v", "d", "e", "f", "flat_1", "flat_4",
+    "flat_b", "flat_h", "flat_horns", "flat_ily", "flat_m", "flat_n", "flat_o", "flat_v", "flatspread_5", "g",
+    "goody_goody", "h", "horns", "i", "ily", "k", "l", "o", "open_8", "open_b", "open_e", "open_f", "open_h", "p",
+    "r", "s", "spread_e", "spread_open_e", "stacked_5", "t", "v", "w", "y"};
 
 class Parser {
 public:
@@ -225,6 +236,13 @@ private:
                 if (value.is_null()) continue;
                 if (!value.is_string()) fail(here, field + key, "must be a string or null");
                 out.aslLexLabel = value.get<std::string>();
+                if (std::find(kAslLexHandshapes.begin(), kAslLexHandshapes.end(), out.aslLexLabel) ==
+                    kAslLexHandshapes.end()) {
+                    fail(here, field + key,
+                         "'" + out.aslLexLabel +
+                             "' is not an ASL-LEX 2.0 handshape label (lower case as ASL-LEX writes them, e.g. "
+                             "open_b, closed_b, flat_b, bent_1; null where none fits)");
+                }
             } else if (key == "description") {
                 if (!value.is_string()) fail(here, field + key, "must be a string");
                 out.description = value.get<std::string>();

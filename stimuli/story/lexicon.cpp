@@ -22,10 +22,23 @@ constexpr double kMaximumSignSeconds = 10.0;
 // Reads one lexicon file into `lexicon`, which may already hold other files' locations and
 // signs (a lexicon folder): locations first (readHeaderAndLocations for every file), then
 // signs (readSigns), so a sign may use a location another file defines.
+// Where each location and sign was defined, and in which layer: 0 the default lexicon, 1 a lab's
+// own (--lexicon), which may redefine what layer 0 defines (an override, listed) but not what
+// its own files define.
+struct Origins {
+    struct Origin {
+        int layer = 0;
+        std::string file;
+        int line = 0;
+    };
+    std::map<std::string, Origin> locations, signs;
+};
+
 class LexiconReader {
 public:
-    LexiconReader(const JsonSource& source, const HandshapeLibrary& shapes, const hand::HandModel& model, Lexicon& lexicon)
-        : source_(source), shapes_(shapes), model_(model), lexicon_(lexicon) {}
+    LexiconReader(const JsonSource& source, const HandshapeLibrary& shapes, const hand::HandModel& model, Lexicon& lexicon,
+                  Origins& origins, int layer)
+        : source_(source), shapes_(shapes), model_(model), lexicon_(lexicon), origins_(origins), layer_(layer) {}
 
     void readHeaderAndLocations() {
         const json& root = source_.root;
@@ -47,9 +60,18 @@ public:
                 if (std::abs(p[i]) > kLocationLimitMm)
                     source_.fail(anchors, "/locations/" + name,
                                  "expected each coordinate within -900 to 900 mm of the chest, got " + json(p[i]).dump());
+            const int line = source_.lineOf(anchors);
             const auto [at, inserted] = lexicon_.locations.emplace(name, p);
-            if (!inserted && at->second != p)
+            const auto origin = origins_.locations.find(name);
+            if (!inserted && origin != origins_.locations.end() && origin->second.layer < layer_) {
+                if (at->second != p)
+                    lexicon_.overrides.push_back({"location " + name, source_.file, line, origin->second.file, origin->second.line});
+                at->second = p;
+            } else if (!inserted && at->second != p) {
                 source_.fail(anchors, "/locations/" + name, "location '" + name + "' is defined differently in another lexicon file");
+            }
+            if (inserted || origin == origins_.locations.end() || origin->second.layer < layer_)
+                origins_.locations[name] = {layer_, source_.file, line};
         }
     }
 
@@ -71,7 +93,12 @@ public:
             if (parsed.error || parsed.items.size() != 1 || parsed.items[0].kind != GlossItemKind::Word ||
                 parsed.items[0].hasArgumentList || sign.gloss == "IX" || sign.gloss == "HOLD")
                 source_.fail(anchors, pointer + "/gloss", "'" + sign.gloss + "' is not a sign gloss (capitals, digits, inner hyphens)");
-            if (lexicon_.find(sign.gloss)) source_.fail(anchors, pointer + "/gloss", sign.gloss + " is defined twice");
+            const auto origin = origins_.signs.find(sign.gloss);
+            const bool overrides = origin != origins_.signs.end() && origin->second.layer < layer_;
+            if (origin != origins_.signs.end() && !overrides)
+                source_.fail(anchors, pointer + "/gloss",
+                             sign.gloss + " is defined twice (also " + origin->second.file + ":" +
+                                 std::to_string(origin->second.line) + ")");
             for (const auto& [key, value] : item.items())
                 if (key != "gloss" && key != "meaning" && key != "hands" && key != "passes" && key != "keyframes" &&
                     key != "notes" && key != "contact")
@@ -90,7 +117,18 @@ public:
             for (HandSide side : sign.hands) readTrack(keyframes, side, sign, anchors, pointer);
             if (sign.durationSeconds() * sign.passes > kMaximumSignSeconds)
                 source_.fail(anchors, pointer + "/keyframes", "a sign lasting over 10 s is a typo in a time");
-            lexicon_.signs.push_back(std::move(sign));
+            sign.file = source_.file;
+            if (overrides) {
+                // The lab's sign takes the default one's place (and its place in the list).
+                lexicon_.overrides.push_back(
+                    {"sign " + sign.gloss, source_.file, sign.line, origin->second.file, origin->second.line});
+                origins_.signs[sign.gloss] = {layer_, source_.file, sign.line};
+                for (LexiconSign& old : lexicon_.signs)
+                    if (old.gloss == sign.gloss) old = std::move(sign);
+            } else {
+                origins_.signs[sign.gloss] = {layer_, source_.file, sign.line};
+                lexicon_.signs.push_back(std::move(sign));
+            }
         }
     }
 
@@ -208,17 +246,37 @@ private:
     const HandshapeLibrary& shapes_;
     const hand::HandModel& model_;
     Lexicon& lexicon_;
+    Origins& origins_;
+    int layer_ = 0;
 };
 
-// One or more lexicon files read into one lexicon; at least one sign in all.
-Lexicon readLexicon(const std::vector<JsonSource>& sources, const std::string& name, const HandshapeLibrary& shapes,
-                    const hand::HandModel& model) {
+// Lexicon files read into one lexicon, layer by layer (the default lexicon, then a lab's own);
+// at least one sign in all.
+Lexicon readLexicon(const std::vector<std::pair<JsonSource, int>>& sources, const std::string& name,
+                    const HandshapeLibrary& shapes, const hand::HandModel& model) {
     Lexicon lexicon;
     lexicon.file = name;
-    for (const JsonSource& source : sources) LexiconReader(source, shapes, model, lexicon).readHeaderAndLocations();
-    for (const JsonSource& source : sources) LexiconReader(source, shapes, model, lexicon).readSigns();
+    Origins origins;
+    for (const auto& [source, layer] : sources)
+        LexiconReader(source, shapes, model, lexicon, origins, layer).readHeaderAndLocations();
+    for (const auto& [source, layer] : sources) LexiconReader(source, shapes, model, lexicon, origins, layer).readSigns();
     if (lexicon.signs.empty()) throw InputError(name, 0, "/signs", "the lexicon holds no sign");
     return lexicon;
+}
+
+// A lexicon file, or every .json file of a lexicon folder in name order.
+std::vector<JsonSource> readLexiconSources(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(path, ec)) return {readJsonFile(path)};
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(path, ec))
+        if (entry.path().extension() == ".json") files.push_back(entry.path());
+    if (ec) throw IoError(path.string(), "cannot read the lexicon folder", ec.value());
+    std::sort(files.begin(), files.end());  // the same order on every machine
+    if (files.empty()) throw InputError(path.string(), 0, "", "the lexicon folder holds no .json file");
+    std::vector<JsonSource> sources;
+    for (const auto& file : files) sources.push_back(readJsonFile(file));
+    return sources;
 }
 
 }  // namespace
@@ -272,21 +330,20 @@ glm::dvec3 palmOriginForTouch(const glm::dvec3& targetMm, const glm::dquat& orie
 }
 
 Lexicon parseLexicon(const JsonSource& source, const HandshapeLibrary& shapes, const hand::HandModel& model) {
-    return readLexicon({source}, source.file, shapes, model);
+    return readLexicon({{source, 0}}, source.file, shapes, model);
 }
 
 Lexicon loadLexicon(const std::filesystem::path& path, const HandshapeLibrary& shapes, const hand::HandModel& model) {
-    std::error_code ec;
-    if (!std::filesystem::is_directory(path, ec)) return parseLexicon(readJsonFile(path), shapes, model);
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(path, ec))
-        if (entry.path().extension() == ".json") files.push_back(entry.path());
-    if (ec) throw IoError(path.string(), "cannot read the lexicon folder", ec.value());
-    std::sort(files.begin(), files.end());  // the same order on every machine
-    if (files.empty()) throw InputError(path.string(), 0, "", "the lexicon folder holds no .json file");
-    std::vector<JsonSource> sources;
-    for (const auto& file : files) sources.push_back(readJsonFile(file));
-    return readLexicon(sources, path.string(), shapes, model);
+    return loadLexicon(path, {}, shapes, model);
+}
+
+Lexicon loadLexicon(const std::filesystem::path& base, const std::filesystem::path& lab, const HandshapeLibrary& shapes,
+                    const hand::HandModel& model) {
+    std::vector<std::pair<JsonSource, int>> sources;
+    for (JsonSource& source : readLexiconSources(base)) sources.emplace_back(std::move(source), 0);
+    if (!lab.empty())
+        for (JsonSource& source : readLexiconSources(lab)) sources.emplace_back(std::move(source), 1);
+    return readLexicon(sources, lab.empty() ? base.string() : lab.string(), shapes, model);
 }
 
 }  // namespace signstim::stimuli

@@ -29,15 +29,26 @@ struct LexiconSign {
     SignContact contact;          // what the citation form touches on purpose
     // keyframes[hand][k]: positions already resolved to the palm frame's origin.
     std::vector<std::vector<VerbKeyframe>> keyframes;
+    std::string file;  // the lexicon file that defines it
     int line = 0;
 
     double durationSeconds() const;
 };
 
+// A sign or location of the default lexicon that a lab's own lexicon (--lexicon) redefines.
+struct LexiconOverride {
+    std::string what;  // "sign TEACHER", "location chin"
+    std::string file;  // the lab's definition
+    int line = 0;
+    std::string replacedFile;  // the default one
+    int replacedLine = 0;
+};
+
 struct Lexicon {
     std::string file;
     std::map<std::string, glm::dvec3> locations;  // name -> signing-space mm
-    std::vector<LexiconSign> signs;               // in file order
+    std::vector<LexiconSign> signs;               // in file order (an override takes the default's place)
+    std::vector<LexiconOverride> overrides;       // in the order read
 
     const LexiconSign* find(std::string_view gloss) const;
     std::vector<std::string> glosses() const;
@@ -62,5 +73,11 @@ glm::dvec3 palmOriginForTouch(const glm::dvec3& targetMm, const glm::dquat& orie
 // order; a location may be defined in any of them, a sign only once).
 Lexicon parseLexicon(const JsonSource& source, const HandshapeLibrary& shapes, const hand::HandModel& model);
 Lexicon loadLexicon(const std::filesystem::path& file, const HandshapeLibrary& shapes, const hand::HandModel& model);
+// The default lexicon `base` with a lab's own `lab` (a file or folder; empty: none) on top: the
+// lab's signs are added, and a sign or location it defines that `base` defines too replaces
+// base's (Lexicon::overrides lists them). Within one of the two, a sign is defined once. The
+// lab's signs may use base's locations.
+Lexicon loadLexicon(const std::filesystem::path& base, const std::filesystem::path& lab, const HandshapeLibrary& shapes,
+                    const hand::HandModel& model);
 
 }  // namespace signstim::stimuli

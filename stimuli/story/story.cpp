@@ -221,6 +221,7 @@ private:
             if (entry.contains("spelled")) {
                 if (!entry["spelled"].is_string()) fail(line, pointer + "/spelled", "expected letters in quotes");
                 character.spelled = entry["spelled"].get<std::string>();
+                character.spelledGiven = true;
             }
             if (character.nameSign.empty()) requireSpellable(character.spelled, line, 0, pointer + "/spelled");
             if (entry.contains("description")) {

@@ -28,6 +28,7 @@ struct StoryCharacter {
     // character.
     std::string nameSign;
     std::string spelled;     // the letters fingerspelled (default: the gloss)
+    bool spelledGiven = false;  // "spelled" written in the file: the letters are meant
     std::string description; // "a student", for the experimenter
     int line = 0;
 };

@@ -2,6 +2,9 @@
 
 #include "common/error.hpp"
 #include "stimuli/scenes_path.hpp"
+#include "stimuli/story/gloss.hpp"
+
+#include <algorithm>
 #include "stimuli/verbs/verb_synthesis.hpp"
 
 namespace signstim::stimuli {
@@ -10,11 +13,12 @@ using namespace signstim::stimuli;
 
 StoryWorld::StoryWorld(const std::string& scenesDir, const std::string& lexiconFile)
     : scenes(resolveScenesDir(scenesDir)),
-      lexiconPath(lexiconFile.empty() ? scenes / "lexicon" : std::filesystem::path(lexiconFile)) {
+      lexiconPath(scenes / "lexicon"),
+      labLexiconPath(lexiconFile) {
     shapes = loadHandshapes(scenes / "handshapes.json", handModel);
     verbs = loadVerbLibrary(scenes / "verbs.json");
     models = loadVerbModels(scenes / "models" / "verb_models.json", verbs);
-    lexicon = loadLexicon(lexiconPath, shapes, handModel);
+    lexicon = loadLexicon(lexiconPath, labLexiconPath, shapes, handModel);
 }
 
 StoryVocabulary StoryWorld::vocabulary() const {
@@ -38,8 +42,16 @@ TimelineSources StoryWorld::sources(const Story& story) const {
     s.verbs = [this, &story](const std::string& verb, VerbVersion version, double subject, double object, int line,
                              int column) {
         try {
-            return synthesizeVerb(VerbSources{&verbs, &models, scenes / "animator", &shapes}, verb, version, subject,
-                                  object);
+            VerbPerformance p = synthesizeVerb(VerbSources{&verbs, &models, scenes / "animator", &shapes}, verb, version,
+                                               subject, object);
+            if (p.draft && !allowDraftAnimator)
+                throw InputError(p.handshapeFile, readJsonFile(p.handshapeFile).lineAt("/draft"), "/draft",
+                                 "a draft (\"draft\": true): have an animator work on it and delete \"draft\", or pass "
+                                 "--allow-draft-animator to use it as it is");
+            return p;
+        } catch (const MissingAnimatorFile& e) {
+            // Kept as such: the timeline decides whether the version that needs it is asked for.
+            throw MissingAnimatorFile(story.file, line, column, std::string(e.what()), e.animatorFile());
         } catch (const InputError& e) {
             // Say which sentence needs it (a missing animator file, most often).
             if (e.isCommandLine()) throw InputError(story.file, line, column, "", e.detail());
@@ -47,6 +59,74 @@ TimelineSources StoryWorld::sources(const Story& story) const {
         }
     };
     return s;
+}
+
+std::vector<std::string> StoryWorld::draftAnimatorFiles(const Story& story) const {
+    std::vector<std::string> drafts;
+    for (const StorySentence& sentence : story.sentences)
+        for (const StoryItem& item : sentence.items) {
+            if (item.kind != StoryItemKind::Verb) continue;
+            const VerbDefinition& verb = verbs.get(item.gloss);
+            const double subject = item.subject >= 0 ? story.characters[static_cast<std::size_t>(item.subject)].position : 0.0;
+            const double object = story.characters[static_cast<std::size_t>(item.object)].position;
+            const std::filesystem::path file = scenes / "animator" / animatorFileName(verb, subject, object);
+            if (!std::filesystem::exists(file)) continue;
+            if (loadAnimatorPerformance(file, verb, subject, object).draft &&
+                std::find(drafts.begin(), drafts.end(), file.string()) == drafts.end())
+                drafts.push_back(file.string());
+        }
+    return drafts;
+}
+
+std::vector<std::string> StoryWorld::copiedDraftNotes(const Story& story) const {
+    std::vector<std::string> notes, seen;
+    const VerbSources sources{&verbs, &models, scenes / "animator", &shapes};
+    for (const StorySentence& sentence : story.sentences)
+        for (const StoryItem& item : sentence.items) {
+            if (item.kind != StoryItemKind::Verb) continue;
+            const VerbDefinition& verb = verbs.get(item.gloss);
+            const double subject = item.subject >= 0 ? story.characters[static_cast<std::size_t>(item.subject)].position : 0.0;
+            const double object = story.characters[static_cast<std::size_t>(item.object)].position;
+            const std::filesystem::path file = scenes / "animator" / animatorFileName(verb, subject, object);
+            if (!std::filesystem::exists(file) || std::find(seen.begin(), seen.end(), file.string()) != seen.end()) continue;
+            seen.push_back(file.string());
+            const VerbPerformance animator = loadAnimatorPerformance(file, verb, subject, object);
+            if (animator.draft) continue;
+            if (sameKeyframes(animator, synthesizeVerb(sources, item.gloss, VerbVersion::Point, subject, object)))
+                notes.push_back(file.string() +
+                                ": its keyframes are the point model's output, but the file is not marked \"draft\": "
+                                "the animator version would show the point version; have an animator work on it, or "
+                                "mark it \"draft\": true");
+        }
+    return notes;
+}
+
+std::vector<std::string> StoryWorld::lexiconOverrideNotes() const {
+    std::vector<std::string> notes;
+    for (const LexiconOverride& o : lexicon.overrides)
+        notes.push_back("lexicon: " + o.file + ":" + std::to_string(o.line) + ": " + o.what + " overrides " + o.replacedFile +
+                        ":" + std::to_string(o.replacedLine));
+    return notes;
+}
+
+std::vector<std::string> StoryWorld::fingerspellingNotes(const Story& story) const {
+    std::vector<std::string> notes;
+    const std::vector<std::string> glosses = lexicon.glosses();
+    for (const StoryCharacter& c : story.characters) {
+        if (!c.nameSign.empty() || c.spelledGiven) continue;
+        std::string letters;
+        for (char letter : c.spelled) letters += (letters.empty() ? "" : "-") + std::string(1, letter);
+        std::string note = story.file + ":" + std::to_string(c.line) + ": " + c.gloss + " will be fingerspelled (" + letters +
+                           "): no sign of the lexicon has the gloss " + c.gloss;
+        const std::vector<std::string> close = closestNames(c.gloss, glosses);
+        if (!close.empty()) {
+            note += " (closest: ";
+            for (std::size_t i = 0; i < close.size(); ++i) note += (i ? ", " : "") + close[i];
+            note += ")";
+        }
+        notes.push_back(note + "; add the sign with --lexicon, give \"nameSign\", or write \"spelled\" to say the letters are meant");
+    }
+    return notes;
 }
 
 }  // namespace signstim::stimuli

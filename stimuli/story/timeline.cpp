@@ -96,6 +96,7 @@ public:
             place(rest, SpanKind::Rest, "rest", static_cast<int>(s), -1, std::nullopt);
         }
         timeline_.durationSeconds = now_;
+        if (version_ == VerbVersion::Animator && !missingAnimator_.empty()) throw missingAnimatorFiles();
         return std::move(timeline_);
     }
 
@@ -334,7 +335,16 @@ private:
         double longest = 0.0;
         VerbPerformance mine;
         for (VerbVersion v : sources_.slotVersions) {
-            VerbPerformance p = sources_.verbs(item.gloss, v, subject, object, item.line, item.column);
+            VerbPerformance p;
+            try {
+                p = sources_.verbs(item.gloss, v, subject, object, item.line, item.column);
+            } catch (const MissingAnimatorFile& e) {
+                // Point, vector and uninflected never need animator files: the missing animator
+                // slot is as long as the point model's performance (what `signstim animator
+                // draft` writes). The animator version names every missing file at the end.
+                missingAnimator_.push_back(e);
+                p = sources_.verbs(item.gloss, VerbVersion::Point, subject, object, item.line, item.column);
+            }
             longest = std::max(longest, p.durationSeconds / options_.rate);
             if (v == version_) mine = std::move(p);
         }
@@ -355,8 +365,25 @@ private:
         place(segment, SpanKind::Verb, item.gloss, sentence, index, arcPoint(object), true);
     }
 
+    MissingAnimatorFiles missingAnimatorFiles() const {
+        std::vector<std::string> files;
+        for (const MissingAnimatorFile& e : missingAnimator_)
+            if (std::find(files.begin(), files.end(), e.animatorFile()) == files.end()) files.push_back(e.animatorFile());
+        std::string list;
+        for (const std::string& f : files) list += "\n  " + f;
+        const MissingAnimatorFile& first = missingAnimator_.front();
+        return MissingAnimatorFiles(first.file(), first.line(), first.column(),
+                                    "the animator version needs " + std::to_string(files.size()) + " keyframe file" +
+                                        (files.size() == 1 ? "" : "s") + " that do" + (files.size() == 1 ? "es" : "") +
+                                        " not exist (the other versions do not need them):" + list +
+                                        "\n  write starting files with `signstim animator draft " + story_.file +
+                                        "` (docs/verbs.md)",
+                                    files);
+    }
+
     const Story& story_;
     VerbVersion version_;
+    std::vector<MissingAnimatorFile> missingAnimator_;
     const TimelineSources& sources_;
     const TimelineOptions& options_;
     Timeline timeline_;

@@ -108,8 +108,24 @@ struct TimelineSources {
                                           VerbVersion::Uninflected};
 };
 
+// What buildTimeline throws for the animator version when animator keyframe files are missing:
+// every one of them (`files()`), named at once; the location is the first verb that needs one.
+class MissingAnimatorFiles : public InputError {
+public:
+    MissingAnimatorFiles(const std::string& file, int line, int column, const std::string& message,
+                         std::vector<std::string> files)
+        : InputError(file, line, column, "", message), files_(std::move(files)) {}
+    const std::vector<std::string>& files() const { return files_; }
+
+private:
+    std::vector<std::string> files_;
+};
+
 // Throws InputError naming the story file, line and column for a sign missing from the
-// lexicon, a letter without a handshape, or a verb the provider cannot give.
+// lexicon, a letter without a handshape, or a verb the provider cannot give. A missing
+// animator file (the provider's MissingAnimatorFile) is an error only for the animator
+// version (MissingAnimatorFiles, naming them all); the other versions size the animator slot
+// by the point model.
 Timeline buildTimeline(const Story& story, VerbVersion version, const TimelineSources& sources,
                        const TimelineOptions& options = {});
 

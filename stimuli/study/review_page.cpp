@@ -253,6 +253,13 @@ private:
                 " versions; phase 2: " + std::to_string(l.sentences.size()) + " side-by-side sentences rated " +
                 std::to_string(l.likertMinimum) + " to " + std::to_string(l.likertMaximum) + "; " +
                 std::to_string(videos) + " clips</dd>\n";
+        // Issue 22 hook: draft animator files the clips use (--allow-draft-animator).
+        if (!l.draftAnimator.empty()) {
+            out_ += "<dt>Draft animator files</dt><dd><strong>" + std::to_string(l.draftAnimator.size()) +
+                    " animator file(s) are drafts from the point model, not an animator's work:</strong>";
+            for (const std::string& f : l.draftAnimator) out_ += " <code>" + escapeHtml(f) + "</code>";
+            out_ += "</dd>\n";
+        }
         out_ += "</dl>\n</header>\n";
     }
 

@@ -538,6 +538,7 @@ json listingToJson(const StudyListing& listing) {
         participants.push_back({{"id", p.id}, {"group", p.group}, {"phase1", phase1}, {"phase2", phase2}});
     }
     j["participants"] = participants;
+    if (!listing.draftAnimator.empty()) j["draftAnimator"] = listing.draftAnimator;  // issue 22: only when there are some
     return j;
 }
 
@@ -632,6 +633,7 @@ StudyListing listingFromJson(const json& j, const std::string& file) {
         }
         listing.participants.push_back(std::move(p));
     }
+    if (j.contains("draftAnimator")) listing.draftAnimator = r.texts(j, "draftAnimator", "");  // issue 22
     return listing;
 }
 

@@ -52,9 +52,11 @@ void hashFolder(Sha256& hash, const fs::path& folder) {
 
 }  // namespace
 
-StudyInputs studyInputs(const fs::path& scenes, const fs::path& lexicon, const fs::path& avatar) {
+StudyInputs studyInputs(const fs::path& scenes, const fs::path& lexicon, const fs::path& labLexicon,
+                        const fs::path& avatar) {
+    // labLexicon: empty without --lexicon (nothing hashed for it).
     return {{scenes / "handshapes.json", scenes / "verbs.json", scenes / "models" / "verb_models.json", avatar},
-            {lexicon, scenes / "animator"}};
+            {lexicon, labLexicon, scenes / "animator"}};
 }
 
 std::string studyDataHash(const std::string& toolVersion, const StudyRenderSettings& settings, bool pngFrames,

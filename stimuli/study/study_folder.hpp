@@ -58,10 +58,11 @@ struct StudyInputs {
     std::vector<std::filesystem::path> files;
     std::vector<std::filesystem::path> folders;
 };
-// SCENES' handshapes, verbs, verb models and the avatar file; the lexicon and the animator
-// keyframes. The avatar's path is the signer's to say (signer::defaultAvatarPath).
+// SCENES' handshapes, verbs, verb models and the avatar file; the lexicon, a lab's lexicon
+// (`--lexicon`; empty: none) and the animator keyframes. The avatar's path is the signer's to
+// say (signer::defaultAvatarPath).
 StudyInputs studyInputs(const std::filesystem::path& scenes, const std::filesystem::path& lexicon,
-                        const std::filesystem::path& avatar);
+                        const std::filesystem::path& labLexicon, const std::filesystem::path& avatar);
 // The tool, the render settings, PNG frames or not, the versions and every input's SHA-256.
 std::string studyDataHash(const std::string& toolVersion, const StudyRenderSettings& settings, bool pngFrames,
                           const std::vector<std::string>& versions, const StudyInputs& inputs);

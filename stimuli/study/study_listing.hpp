@@ -95,6 +95,9 @@ struct StudyListing {
     std::string size;
     std::string fps;
     std::uint32_t msaa = 4;
+    // Animator keyframe files marked "draft" that the clips use (file names in SCENES/animator/;
+    // a study uses them only with --allow-draft-animator). In the manifest and on the review page.
+    std::vector<std::string> draftAnimator;
 };
 
 }  // namespace signstim::stimuli

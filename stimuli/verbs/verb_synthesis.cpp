@@ -5,6 +5,8 @@
 #include "stimuli/verbs/sora.hpp"
 
 #include <algorithm>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -193,12 +195,13 @@ VerbPerformance synthesizeUncheckedVerb(const VerbSources& sources, const std::s
         case VerbVersion::Animator: {
             const std::filesystem::path file = sources.animatorDir / animatorFileName(verb, subject, object);
             if (!std::filesystem::exists(file))
-                throw InputError(file.string(), 0, "",
+                throw MissingAnimatorFile(file.string(),
                                  "no animator keyframes for " + verb.name +
                                      (verb.objectOnly() ? "" : " subject " + positionText(subject)) + " object " +
                                      positionText(object) +
                                      ": author this file (start from `signstim verb ... --version point --json`; "
-                                     "see docs/verbs.md)");
+                                     "see docs/verbs.md)",
+                                         file.string());
             return loadAnimatorPerformance(file, verb, subject, object);
         }
     }
@@ -216,6 +219,11 @@ std::string formatPerformanceJson(const VerbPerformance& performance) {
                     "unit quaternion [w, x, y, z] of the palm frame; fingers (+z) and palm (+x) directions given for "
                     "reading and editing (keep them consistent or delete one)";
     root["durationSeconds"] = roundedTo(performance.durationSeconds, 1e6);
+    if (performance.draft) {
+        root["draft"] = true;
+        root["about"] = "a draft from the point model (signstim animator draft): edit the keyframes, then delete "
+                        "\"draft\" and this line; a study refuses drafts unless --allow-draft-animator";
+    }
     Json hands = Json::object();
     for (const HandTrack& track : performance.hands) {
         Json keys = Json::array();
@@ -242,6 +250,31 @@ std::string formatPerformanceJson(const VerbPerformance& performance) {
     return text + "\n";
 }
 
+std::string formatAnimatorDraft(const VerbSources& sources, const std::string& verb, double subject, double object) {
+    VerbPerformance performance = synthesizeVerb(sources, verb, VerbVersion::Point, subject, object);
+    performance.draft = true;
+    return formatPerformanceJson(performance);
+}
+
+bool sameKeyframes(const VerbPerformance& a, const VerbPerformance& b) {
+    // The precision formatPerformanceJson writes: 0.01 mm, 1e-6 of a quaternion or a second.
+    constexpr double kMm = 0.011, kUnit = 2e-6;
+    if (a.hands.size() != b.hands.size()) return false;
+    for (std::size_t h = 0; h < a.hands.size(); ++h) {
+        const auto& ka = a.hands[h].keyframes;
+        const auto& kb = b.hands[h].keyframes;
+        if (a.hands[h].side != b.hands[h].side || ka.size() != kb.size()) return false;
+        for (std::size_t k = 0; k < ka.size(); ++k) {
+            if (std::abs(ka[k].timeSeconds - kb[k].timeSeconds) > kUnit || ka[k].handshape != kb[k].handshape) return false;
+            if (glm::length(ka[k].pose.positionMm - kb[k].pose.positionMm) > kMm) return false;
+            // q and -q are the same rotation.
+            if (1.0 - std::abs(glm::dot(glm::normalize(ka[k].pose.orientation), glm::normalize(kb[k].pose.orientation))) > 4 * kUnit)
+                return false;
+        }
+    }
+    return true;
+}
+
 VerbPerformance loadAnimatorPerformance(const std::filesystem::path& file, const VerbDefinition& verb, double subject,
                                         double object) {
     const JsonSource source = readJsonFile(file);
@@ -258,6 +291,9 @@ VerbPerformance parseAnimatorPerformance(const JsonSource& source, const VerbDef
         version != root.end() && !(version->is_string() && parseVerbVersion(version->get<std::string>())))
         source.failAt("/version", "expected the version the keyframes were made as: \"point\", \"vector\", \"animator\" "
                                   "or \"uninflected\", got " + version->dump());
+    if (const auto draft = root.find("draft"); draft != root.end() && !draft->is_boolean())
+        source.failAt("/draft", "expected true (a starting point no animator has worked on yet) or false, got " +
+                                    draft->dump());
     if (root.value("verb", "") != verb.name)
         source.fail({"\"verb\""}, "/verb", "the file is for verb '" + root.value("verb", "") + "', expected " + verb.name);
     const auto positionMatches = [&](const char* key, double expected) {
@@ -277,6 +313,7 @@ VerbPerformance parseAnimatorPerformance(const JsonSource& source, const VerbDef
     performance.subject = verb.objectOnly() ? 0.0 : subject;
     performance.object = object;
     performance.handshapeFile = source.file;
+    performance.draft = root.value("draft", false);
     for (auto it = root["hands"].begin(); it != root["hands"].end(); ++it)
         if (!parseHandSide(it.key()) || verb.handIndex(*parseHandSide(it.key())) < 0)
             source.fail({"\"hands\"", "\"" + it.key() + "\""}, "/hands/" + it.key(),

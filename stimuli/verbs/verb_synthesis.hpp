@@ -8,6 +8,7 @@
 //   VerbPerformance p = synthesizeVerb(sources, "ASK", VerbVersion::Point, 0.9, -0.6);
 //   for (double t = 0; t <= p.durationSeconds; t += 1 / 30.0)
 //       HandSample right = sampleHand(p.hands[0], t);
+#include "common/error.hpp"
 #include "stimuli/story/handshapes.hpp"
 #include "stimuli/verbs/verb_models.hpp"
 #include "stimuli/verbs/verbs.hpp"
@@ -47,6 +48,9 @@ struct VerbPerformance {
     std::vector<HandTrack> hands;  // right first
     std::string handshapeFile;     // the verbs file or the animator file the handshapes come from
     SignContact contact;           // the verb's (every version touches as its citation form does)
+    // An animator file marked "draft": true — a starting point (`signstim animator draft`), not
+    // yet an animator's work. A study refuses it unless --allow-draft-animator (docs/verbs.md).
+    bool draft = false;
 
     const HandTrack* hand(HandSide side) const;
 };
@@ -71,6 +75,21 @@ struct VerbSources {
     const HandshapeLibrary* handshapes = nullptr;
 };
 
+// What synthesizeVerb throws when the animator version's keyframe file is missing: an
+// InputError naming the file, which `file()` also gives. Callers that can do without the
+// animator version (point, vector and uninflected stories) catch it (stimuli/story/timeline.hpp).
+class MissingAnimatorFile : public InputError {
+public:
+    MissingAnimatorFile(const std::string& file, const std::string& message, std::string animatorFile)
+        : InputError(file, 0, "", message), animatorFile_(std::move(animatorFile)) {}
+    MissingAnimatorFile(const std::string& file, int line, int column, const std::string& message, std::string animatorFile)
+        : InputError(file, line, column, "", message), animatorFile_(std::move(animatorFile)) {}
+    const std::string& animatorFile() const { return animatorFile_; }
+
+private:
+    std::string animatorFile_;
+};
+
 // Throws InputError for an unknown verb, positions outside [-1, 1] (naming `subjectField` /
 // `objectField`), a verb without a trained model, a missing animator file (naming it), an
 // unknown handshape (when sources.handshapes is given), and a model that predicts a pose that
@@ -89,8 +108,18 @@ VerbPerformance synthesizeUncheckedVerb(const VerbSources& sources, const std::s
 VerbPerformance performanceFromPoses(const VerbDefinition& verb, VerbVersion version, double subject, double object,
                                      const std::vector<std::vector<HandPose>>& poses);
 
-// The keyframe JSON of `signstim verb --json`, which is also the animator file format.
+// The keyframe JSON of `signstim verb --json`, which is also the animator file format (with
+// "draft": true when performance.draft).
 std::string formatPerformanceJson(const VerbPerformance& performance);
+
+// The starting animator file for (verb, subject, object): the point model's performance,
+// marked "draft": true (`signstim animator draft`).
+std::string formatAnimatorDraft(const VerbSources& sources, const std::string& verb, double subject, double object);
+
+// Whether two performances have the same keyframes (times, positions, orientations and
+// handshapes, to the precision formatPerformanceJson writes): an animator file that is not
+// marked as a draft but equals the point model's output is a copied draft (story --check warns).
+bool sameKeyframes(const VerbPerformance& a, const VerbPerformance& b);
 
 // scenes/animator/<VERB>_s<S>_o<O>.json, or <VERB>_o<O>.json for object-only verbs;
 // positions printed as in "0.9", "-0.6", "0".
@@ -98,7 +127,7 @@ std::string animatorFileName(const VerbDefinition& verb, double subject, double 
 
 // Reads an animator keyframe file for `verb` at (subject, object); its verb, subject and
 // object must match. Its "version" field is informational (a `--version point --json` file
-// is a valid starting point).
+// is a valid starting point); "draft" (optional, true or false) sets VerbPerformance::draft.
 VerbPerformance loadAnimatorPerformance(const std::filesystem::path& file, const VerbDefinition& verb, double subject,
                                         double object);
 VerbPerformance parseAnimatorPerformance(const JsonSource& source, const VerbDefinition& verb, double subject,

@@ -75,8 +75,9 @@ TEST(HandCliTest, LeftPoseIsTheMirrorOfTheRight) {
 TEST(HandCliTest, ShapesListsNamesWithLabels) {
     const CommandResult r = runSignstim("hand shapes " + kScenes);
     ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find("bent-B\tbent_B\n"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("P\t-\n"), std::string::npos);
+    EXPECT_NE(r.output.find("bent-B\tflat_b\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("open-B\topen_b\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("10\t-\n"), std::string::npos);
 }
 
 TEST(HandCliTest, UnknownShapeIsAnInputError) {

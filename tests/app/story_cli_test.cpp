@@ -52,6 +52,133 @@ TEST(StoryCli, CheckSaysOkForTheExampleAndNamesLineAndColumnOfAnUnknownSign) {
     EXPECT_EQ(noVersion.status, 1) << noVersion.output;
 }
 
+// Issue 22: a story at arc positions no animator file covers, with a character whose gloss no
+// sign has (fingerspelled).
+const char* kNewPlaces = R"json({
+  "format": "signstim-story", "version": 1, "title": "New places",
+  "characters": [{"gloss": "STUDENT", "position": 0.5}, {"gloss": "MARY", "position": -0.5, "spelled": "MARY"}],
+  "sentences": [
+    "STUDENT IX(0.5) ASK MARY IX(-0.5)",
+    "IX(MARY) TELL IX(STUDENT) MY"
+  ]
+})json";
+
+// A lab's lexicon: STUDENT (new) and MY (the starter's, slower).
+const char* kLabLexicon = R"({"format": "signstim-lexicon", "version": 1, "signs": [
+  {"gloss": "STUDENT", "hands": ["right"], "keyframes": {"right": [
+    {"time": 0, "at": "chest", "offset": [0, 0, 70], "touch": "palm", "fingers": [-0.4, 1, 0], "palm": [0, 0, -1], "handshape": "open-B"},
+    {"time": 0.3, "at": "chest", "offset": [60, -40, 90], "touch": "palm", "fingers": [-0.4, 1, 0], "palm": [0, 0, -1], "handshape": "flat-O"}]}},
+  {"gloss": "MY", "hands": ["right"], "contact": ["body"], "keyframes": {"right": [
+    {"time": 0, "at": "chest", "offset": [0, 0, 70], "touch": "palm", "fingers": [-0.4, 1, 0], "palm": [0, 0, -1], "handshape": "open-B"},
+    {"time": 0.4, "at": "chest", "offset": [0, 0, 32], "touch": "palm", "fingers": [-0.4, 1, 0], "palm": [0, 0, -1], "handshape": "open-B"}]}}
+]})";
+
+TEST(StoryCli, ALabLexiconAddsToTheDefaultOneAndCheckListsOverridesAndFingerspelledGlosses) {
+    const fs::path dir = freshDir("lab-lexicon");
+    std::ofstream(dir / "story.json") << kNewPlaces;
+    std::ofstream(dir / "lab.json") << kLabLexicon;
+    const std::string story = shellQuote((dir / "story.json").string());
+    const auto plain = runSignstim("story " + story + " --version point --json --scenes " + shellQuote(kScenes),
+                                   signstim::test::Capture::StdoutOnly);
+    ASSERT_EQ(plain.status, 0) << plain.output;
+    const auto check = runSignstim("story " + story + " --check --scenes " + shellQuote(kScenes));
+    EXPECT_NE(check.output.find("story.json:3: STUDENT will be fingerspelled (S-T-U-D-E-N-T): no sign of the lexicon "
+                                "has the gloss STUDENT (closest: STUDY"),
+              std::string::npos)
+        << check.output;
+    EXPECT_EQ(check.output.find("MARY will be fingerspelled"), std::string::npos) << "\"spelled\" says it is meant";
+
+    // With the lab's lexicon: STUDENT is a sign now (so the character is signed with it), MY is
+    // the lab's, and the default signs are all still there.
+    const std::string lab = " --lexicon " + shellQuote((dir / "lab.json").string());
+    const auto withLab = runSignstim("story " + story + " --check --scenes " + shellQuote(kScenes) + lab);
+    EXPECT_EQ(withLab.output.find("STUDENT will be fingerspelled"), std::string::npos) << withLab.output;
+    EXPECT_NE(withLab.output.find("note: lexicon: " + (dir / "lab.json").string() + ":5: sign MY overrides " + kScenes +
+                                  "/lexicon/starter.json:5"),
+              std::string::npos)
+        << withLab.output;
+    const auto timeline = runSignstim("story " + story + " --version point --json --scenes " + shellQuote(kScenes) + lab,
+                                      signstim::test::Capture::StdoutOnly);
+    ASSERT_EQ(timeline.status, 0) << timeline.output;
+    // The name STUDENT: seven letters fingerspelled without the lab's lexicon, one short sign with it.
+    const auto nameSeconds = [](const std::string& output) {
+        double seconds = 0.0;
+        const nlohmann::json timelineJson = nlohmann::json::parse(output);
+        for (const auto& span : timelineJson["spans"])
+            if (span.value("kind", "") == "name" && span.value("label", "") == "STUDENT")
+                seconds += span["end"].get<double>() - span["start"].get<double>();
+        return seconds;
+    };
+    EXPECT_GT(nameSeconds(timeline.output), 0.0);
+    EXPECT_LT(nameSeconds(timeline.output), 0.5 * nameSeconds(plain.output)) << "STUDENT is signed with the lab's sign";
+
+    // A lab sign defined twice in its own files is an error naming file and line (exit 2).
+    std::string twice = kLabLexicon;
+    twice.replace(twice.find("\"MY\""), 4, "\"STUDENT\"");
+    std::ofstream(dir / "twice.json") << twice;
+    const auto bad = runSignstim("story " + story + " --check --scenes " + shellQuote(kScenes) + " --lexicon " +
+                                 shellQuote((dir / "twice.json").string()));
+    EXPECT_EQ(bad.status, 2) << bad.output;
+    EXPECT_NE(bad.output.find("twice.json:5:"), std::string::npos) << bad.output;
+    EXPECT_NE(bad.output.find("STUDENT is defined twice"), std::string::npos) << bad.output;
+}
+
+TEST(StoryCli, NewArcPositionsRenderWithoutAnimatorFilesAndAnimatorDraftWritesThemAll) {
+    const fs::path dir = freshDir("new-places");
+    std::ofstream(dir / "story.json") << kNewPlaces;
+    const std::string story = shellQuote((dir / "story.json").string());
+    for (const char* version : {"point", "vector", "uninflected"}) {
+        const auto r = runSignstim("story " + story + " --version " + version + " --json --scenes " + shellQuote(kScenes),
+                                   signstim::test::Capture::StdoutOnly);
+        EXPECT_EQ(r.status, 0) << version << ": " << r.output;
+    }
+    const auto animator = runSignstim("story " + story + " --version animator --json --scenes " + shellQuote(kScenes));
+    EXPECT_EQ(animator.status, 2) << animator.output;
+    EXPECT_NE(animator.output.find("story.json:5:"), std::string::npos) << animator.output;
+    EXPECT_NE(animator.output.find("ASK_s0.5_o-0.5.json"), std::string::npos) << "every file at once: " << animator.output;
+    EXPECT_NE(animator.output.find("TELL_o0.5.json"), std::string::npos) << "every file at once: " << animator.output;
+    const auto check = runSignstim("story " + story + " --check --scenes " + shellQuote(kScenes));
+    EXPECT_EQ(check.status, 0) << check.output;
+    EXPECT_NE(check.output.find("warning: the animator version cannot be rendered: 2 keyframe files are missing"),
+              std::string::npos)
+        << check.output;
+
+    // Starting files for all of them, marked as drafts; never overwritten.
+    const fs::path out = dir / "drafts";
+    const auto draft = runSignstim("animator draft " + story + " --out " + shellQuote(out.string()) + " --scenes " +
+                                   shellQuote(kScenes));
+    ASSERT_EQ(draft.status, 0) << draft.output;
+    EXPECT_NE(draft.output.find("2 drafts written"), std::string::npos) << draft.output;
+    for (const char* name : {"ASK_s0.5_o-0.5.json", "TELL_o0.5.json"}) {
+        const nlohmann::json file = nlohmann::json::parse(readFile(out / name));
+        EXPECT_EQ(file.value("draft", false), true) << name;
+        EXPECT_EQ(file.value("format", ""), "signstim-verb-keyframes") << name;
+    }
+    const auto again = runSignstim("animator draft " + story + " --out " + shellQuote(out.string()) + " --scenes " +
+                                   shellQuote(kScenes));
+    EXPECT_NE(again.output.find("0 drafts written, 2 verb instances already had a file"), std::string::npos) << again.output;
+
+    // A scenes folder whose animator/ holds the drafts: the animator version renders, --check
+    // names the drafts, and an unmarked copy of the point model's keyframes is warned about.
+    const fs::path scenes = dir / "scenes";
+    fs::create_directories(scenes / "animator");
+    for (const auto& entry : fs::directory_iterator(kScenes))
+        if (entry.path().filename() != "animator") fs::create_directory_symlink(entry.path(), scenes / entry.path().filename());
+    for (const auto& entry : fs::directory_iterator(out)) fs::copy_file(entry.path(), scenes / "animator" / entry.path().filename());
+    const auto drafted = runSignstim("story " + story + " --version animator --json --scenes " + shellQuote(scenes.string()),
+                                     signstim::test::Capture::StdoutOnly);
+    EXPECT_EQ(drafted.status, 0) << drafted.output;
+    std::string tell = readFile(scenes / "animator" / "TELL_o0.5.json");
+    tell.replace(tell.find("\"draft\": true"), 13, "\"draft\": false");
+    std::ofstream(scenes / "animator" / "TELL_o0.5.json", std::ios::trunc) << tell;
+    const auto noted = runSignstim("story " + story + " --check --scenes " + shellQuote(scenes.string()));
+    EXPECT_EQ(noted.status, 0) << noted.output;
+    EXPECT_NE(noted.output.find("ASK_s0.5_o-0.5.json is a draft"), std::string::npos) << noted.output;
+    EXPECT_NE(noted.output.find("TELL_o0.5.json: its keyframes are the point model's output, but the file is not marked"),
+              std::string::npos)
+        << noted.output;
+}
+
 TEST(StoryCli, JsonTimelineListsTheVerbSlots) {
     const auto r = runSignstim("story " + shellQuote(kExample) + " --version vector --json --scenes " + shellQuote(kScenes),
                                signstim::test::Capture::StdoutOnly);

@@ -56,6 +56,37 @@ TEST(StudyCli, DefaultStudyChecksWithTheDesignOfThePaper) {
     EXPECT_NE(r.output.find("8 side-by-side sentences"), std::string::npos) << r.output;
 }
 
+// Issue 22: an animator file marked "draft" is refused by a study unless
+// --allow-draft-animator; then the manifest and the review page list it.
+TEST(StudyCli, DraftAnimatorFilesAreRefusedUnlessAllowedAndThenListed) {
+    const fs::path dir = freshDir("draft-animator");
+    fs::create_directories(dir);
+    const fs::path scenes = dir / "scenes";
+    fs::create_directories(scenes / "animator");
+    for (const auto& entry : fs::directory_iterator(kScenes))
+        if (entry.path().filename() != "animator") fs::create_directory_symlink(entry.path(), scenes / entry.path().filename());
+    for (const auto& entry : fs::directory_iterator(fs::path(kScenes) / "animator"))
+        fs::copy_file(entry.path(), scenes / "animator" / entry.path().filename());
+    // story-01 (Tom at 0.9 asks Ann at -0.6) uses ASK_s0.9_o-0.6.json.
+    std::string ask = readFile(scenes / "animator" / "ASK_s0.9_o-0.6.json");
+    ask.replace(ask.find('{'), 1, "{\n  \"draft\": true,");
+    std::ofstream(scenes / "animator" / "ASK_s0.9_o-0.6.json", std::ios::trunc) << ask;
+    const std::string base = "study " + shellQuote(kSmall) + " --scenes " + shellQuote(scenes.string());
+
+    const auto refused = runSignstim(base + " --check");
+    EXPECT_EQ(refused.status, 2) << refused.output;
+    EXPECT_NE(refused.output.find("ASK_s0.9_o-0.6.json:2: field '/draft'"), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find("--allow-draft-animator"), std::string::npos) << refused.output;
+
+    const auto allowed = runSignstim(base + " --allow-draft-animator --quick --quiet --out " + shellQuote((dir / "out").string()));
+    ASSERT_EQ(allowed.status, 0) << allowed.output;
+    const nlohmann::json manifest = nlohmann::json::parse(readFile(dir / "out" / "manifest.json"));
+    EXPECT_EQ(manifest["study"]["draftAnimator"], nlohmann::json::array({"ASK_s0.9_o-0.6.json"})) << manifest["study"].dump();
+    const std::string page = readFile(dir / "out" / "index.html");
+    EXPECT_NE(page.find("Draft animator files"), std::string::npos);
+    EXPECT_NE(page.find("<code>ASK_s0.9_o-0.6.json</code>"), std::string::npos);
+}
+
 TEST(StudyCli, BadStudyFilesAreRefusedNamingFileLineAndField) {
     const fs::path dir = freshDir("bad");
     fs::create_directories(dir);

@@ -178,3 +178,63 @@ TEST(Lexicon, AFolderIsReadInNameOrderWithSharedLocationsAndEachSignOnce) {
 
 }  // namespace
 }  // namespace signstim::stimuli
+
+namespace signstim::stimuli {
+namespace {
+
+// A lab's own lexicon (--lexicon) on top of the default one: it adds signs and overrides the
+// default's signs and locations of the same name, each override listed; within the lab's own
+// files a sign is still defined once.
+TEST(Lexicon, ALabLexiconAddsToAndOverridesTheDefaultOne) {
+    const std::filesystem::path root = std::filesystem::path(SIGNSTIM_BINARY_DIR) / "lexicon_test" / "overlay";
+    std::filesystem::remove_all(root);
+    std::filesystem::create_directories(root / "base");
+    std::filesystem::create_directories(root / "lab");
+    const std::string header = "{\"format\": \"signstim-lexicon\", \"version\": 1,\n";
+    const auto sign = [](const std::string& gloss, const std::string& at, double seconds) {
+        return "{\"gloss\": \"" + gloss + "\", \"hands\": [\"right\"], \"keyframes\": {\"right\": [\n"
+               "{\"time\": 0, \"at\": \"" + at + "\", \"fingers\": [0, 1, 0], \"palm\": [0, 0, -1], \"handshape\": \"B\"},\n"
+               "{\"time\": " + std::to_string(seconds) + ", \"at\": \"" + at +
+               "\", \"offset\": [0, 0, 100], \"fingers\": [0, 1, 0], \"palm\": [0, 0, -1], \"handshape\": \"B\"}]}}";
+    };
+    std::ofstream(root / "base" / "00-locations.json") << header << "\"locations\": {\"chin\": [0, 255, 95], \"chest\": [0, 0, 110]}}\n";
+    std::ofstream(root / "base" / "signs.json")
+        << header << "\"signs\": [\n" << sign("THANK-YOU", "chin", 0.4) << ",\n" << sign("MY", "chest", 0.3) << "]}\n";
+    std::ofstream(root / "lab" / "ours.json") << header << "\"locations\": {\"chin\": [0, 250, 95]},\n\"signs\": [\n"
+                                              << sign("STUDENT", "chest", 0.5) << ",\n"
+                                              << sign("MY", "chest", 0.6) << "]}\n";
+
+    const Lexicon lexicon = loadLexicon(root / "base", root / "lab" / "ours.json", shapes(), model());
+    EXPECT_EQ(lexicon.glosses(), (std::vector<std::string>{"THANK-YOU", "MY", "STUDENT"}))
+        << "added at the end, an override in the default's place";
+    EXPECT_DOUBLE_EQ(lexicon.find("MY")->durationSeconds(), 0.6) << "the lab's MY replaces the default's";
+    EXPECT_NE(lexicon.find("MY")->file.find("ours.json"), std::string::npos);
+    EXPECT_DOUBLE_EQ(lexicon.locations.at("chin").y, 250.0) << "the lab may move a location";
+    ASSERT_EQ(lexicon.overrides.size(), 2u);
+    EXPECT_EQ(lexicon.overrides[0].what, "location chin");
+    EXPECT_EQ(lexicon.overrides[1].what, "sign MY");
+    EXPECT_NE(lexicon.overrides[1].file.find("ours.json"), std::string::npos);
+    EXPECT_EQ(lexicon.overrides[1].line, 7);
+    EXPECT_NE(lexicon.overrides[1].replacedFile.find("signs.json"), std::string::npos);
+    EXPECT_EQ(lexicon.overrides[1].replacedLine, 6);
+
+    // Without a lab lexicon: the default alone, nothing overridden.
+    const Lexicon base = loadLexicon(root / "base", {}, shapes(), model());
+    EXPECT_EQ(base.glosses(), (std::vector<std::string>{"THANK-YOU", "MY"}));
+    EXPECT_TRUE(base.overrides.empty());
+
+    // Twice within the lab's own files is still a mistake, naming both places.
+    std::ofstream(root / "lab" / "more.json") << header << "\"signs\": [\n" << sign("STUDENT", "chest", 0.5) << "]}\n";
+    try {
+        loadLexicon(root / "base", root / "lab", shapes(), model());
+        ADD_FAILURE() << "a lab sign defined twice was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(e.file().find("ours.json"), std::string::npos) << e.what();
+        EXPECT_EQ(e.line(), 4);
+        EXPECT_NE(std::string(e.what()).find("defined twice (also "), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("more.json:3"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace signstim::stimuli

@@ -311,5 +311,91 @@ TEST(Timeline, JsonIsTheSameForTheSameInputs) {
     EXPECT_NE(a.find("\"kind\": \"verb\""), std::string::npos);
 }
 
+// Issue 22: a story at arc positions no animator file covers renders in point, vector and
+// uninflected; the animator version names every missing file at once.
+TEST(Timeline, MissingAnimatorFilesStopOnlyTheAnimatorVersionAndAreNamedAtOnce) {
+    const World& w = world();
+    const Story story = parseStory(parseJsonText(R"json({
+  "format": "signstim-story", "version": 1, "title": "New places",
+  "characters": [{"gloss": "JOHN", "position": 0.5}, {"gloss": "MARY", "position": -0.5}],
+  "sentences": [
+    "JOHN IX(0.5) ASK MARY IX(-0.5)",
+    "IX(MARY) TELL IX(JOHN)",
+    "IX(JOHN) ASK IX(MARY)"
+  ]
+})json", "new-places.json"), StoryVocabulary{&w.verbs, w.lexicon.glosses(), nullptr, nullptr});
+    TimelineSources sources = w.sources();
+    sources.verbs = [&w](const std::string& verb, VerbVersion version, double subject, double object, int line, int column) {
+        try {
+            return synthesizeVerb(VerbSources{&w.verbs, &w.models, kSource + "/scenes/animator"}, verb, version, subject, object);
+        } catch (const MissingAnimatorFile& e) {
+            throw MissingAnimatorFile("new-places.json", line, column, e.what(), e.animatorFile());
+        }
+    };
+    std::vector<double> durations;
+    for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Uninflected})
+        durations.push_back(buildTimeline(story, v, sources).durationSeconds);
+    EXPECT_DOUBLE_EQ(durations[0], durations[1]);
+    EXPECT_DOUBLE_EQ(durations[0], durations[2]);
+    try {
+        buildTimeline(story, VerbVersion::Animator, sources);
+        FAIL() << "the animator version built without its files";
+    } catch (const MissingAnimatorFiles& e) {
+        EXPECT_EQ(e.file(), "new-places.json");
+        EXPECT_EQ(e.line(), 5) << "the first verb that needs one";
+        ASSERT_EQ(e.files().size(), 2u) << "ASK at (0.5, -0.5) once, TELL at -0.5 -> 0.5";
+        EXPECT_NE(e.files()[0].find("ASK_s0.5_o-0.5.json"), std::string::npos) << e.files()[0];
+        EXPECT_NE(e.files()[1].find("TELL_o0.5.json"), std::string::npos) << e.files()[1];
+        const std::string message = e.what();
+        EXPECT_NE(message.find("ASK_s0.5_o-0.5.json"), std::string::npos) << message;
+        EXPECT_NE(message.find("TELL_o0.5.json"), std::string::npos) << message;
+        EXPECT_NE(message.find("signstim animator draft"), std::string::npos) << message;
+    }
+}
+
+std::string replacedOnce(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+// `signstim animator draft` writes the point model's keyframes marked "draft": true; read back,
+// the file is a draft with the point model's keyframes. Without its mark it is the copied draft
+// story --check warns about; edited, it is an animator's own work.
+TEST(AnimatorDraft, ADraftIsThePointModelMarkedAndAnUnmarkedCopyIsRecognised) {
+    const World& w = world();
+    const VerbSources sources{&w.verbs, &w.models, kSource + "/scenes/animator", &w.shapes};
+    const VerbDefinition& ask = *w.verbs.find("ASK");
+    const std::string text = formatAnimatorDraft(sources, "ASK", 0.5, -0.5);
+    EXPECT_NE(text.find("\"draft\": true"), std::string::npos) << text;
+    const VerbPerformance point = synthesizeVerb(sources, "ASK", VerbVersion::Point, 0.5, -0.5);
+    const VerbPerformance draft = parseAnimatorPerformance(parseJsonText(text, "ASK_s0.5_o-0.5.json"), ask, 0.5, -0.5);
+    EXPECT_TRUE(draft.draft);
+    EXPECT_TRUE(sameKeyframes(draft, point));
+
+    const std::string unmarked = replacedOnce(text, "\"draft\": true", "\"draft\": false");
+    const VerbPerformance copied = parseAnimatorPerformance(parseJsonText(unmarked, "ASK_s0.5_o-0.5.json"), ask, 0.5, -0.5);
+    EXPECT_FALSE(copied.draft);
+    EXPECT_TRUE(sameKeyframes(copied, point)) << "a copied draft is recognised";
+
+    VerbPerformance edited = copied;
+    edited.hands[0].keyframes[1].pose.positionMm.x += 5.0;
+    EXPECT_FALSE(sameKeyframes(edited, point)) << "an animator's edit is not a draft";
+    edited = copied;
+    edited.hands[0].keyframes[0].handshape = "X";
+    EXPECT_FALSE(sameKeyframes(edited, point));
+
+    const std::string bad = replacedOnce(text, "\"draft\": true", "\"draft\": \"yes\"");
+    try {
+        parseAnimatorPerformance(parseJsonText(bad, "ASK_s0.5_o-0.5.json"), ask, 0.5, -0.5);
+        FAIL() << "\"draft\": \"yes\" accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), "ASK_s0.5_o-0.5.json");
+        EXPECT_EQ(e.field(), "/draft");
+        EXPECT_GT(e.line(), 1);
+        EXPECT_NE(std::string(e.what()).find("expected true"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace signstim::stimuli
