@@ -42,8 +42,8 @@ struct PushConstants {
     glm::vec4 cameraPosition;
     std::uint32_t matrixBase = 0;
     std::uint32_t jointCount = 0;  // 0: rigid
-    std::uint32_t morphBase = 0;   // first (target, weight) pair of the draw
-    std::uint32_t morphCount = 0;  // 0: no morph (mesh.vert)
+    std::uint32_t morphBase = 0;   // the draw's first morphed vec4 (vk_morph.hpp)
+    std::uint32_t morphCount = 0;  // 1: morphed (mesh_morph.vert), 0: not
 };
 
 std::string joinCounts(const std::vector<std::uint32_t>& counts) {
@@ -68,7 +68,7 @@ struct Draw {
     const vk::GpuPrimitive* primitive;
     std::uint32_t matrixBase, jointCount;  // jointCount 0: rigid
     float distance;
-    std::uint32_t morphBase = 0, morphCount = 0;  // morphCount 0: unmorphed
+    std::uint32_t morphBase = 0, morphCount = 0;  // morphCount 1: morphed, 0: not
 };
 
 }  // namespace
@@ -79,7 +79,7 @@ struct Renderer::Impl {
         std::unique_ptr<vk::OffscreenTarget> target;
         VkCommandBuffer cmd = VK_NULL_HANDLE;
         vk::UniqueFence fence;
-        vk::Buffer matrices, morphWeights;
+        vk::Buffer matrices, morphed;
         VkDescriptorSet set = VK_NULL_HANDLE;
         std::vector<std::pair<LabelRect, std::string>> labels;
     };
@@ -106,7 +106,8 @@ struct Renderer::Impl {
 
     // Scratch reused across frames.
     std::vector<glm::mat4> matrices, world, joints;
-    std::vector<vk::MorphEntry> morphEntries;
+    std::vector<glm::vec4> morphed;            // the frame's morphed (position, normal) pairs
+    std::vector<std::uint32_t> morphBases;     // per primitive of the node being recorded
     std::vector<Draw> opaqueDraws, blendDraws;
 
     ~Impl() {
@@ -124,10 +125,10 @@ struct Renderer::Impl {
 
 void Renderer::Impl::checkOptions(const vk::PhysicalDevice& physical) {
     const auto& limits = device->properties().limits;
-    // The mesh pipeline layout: 3 sets (frame, material, morph targets), 4 storage buffers
+    // The mesh pipeline layout: 3 sets (frame, material, morph targets), 3 storage buffers
     // in the vertex stage, the push constants. Vulkan's guaranteed minimums (4, 4, 128 bytes)
     // cover them; a device below them is refused here rather than failing at draw time.
-    if (limits.maxBoundDescriptorSets < 3 || limits.maxPerStageDescriptorStorageBuffers < 4 ||
+    if (limits.maxBoundDescriptorSets < 3 || limits.maxPerStageDescriptorStorageBuffers < 3 ||
         limits.maxPushConstantsSize < sizeof(PushConstants))
         throw EnvironmentError("device '" + info.name + "' is below Vulkan's minimum limits (descriptor sets, "
                                "storage buffers per stage, push constant size)");
@@ -167,7 +168,7 @@ void Renderer::Impl::createPipelineLayout(VkFormat colorFormat, VkFormat depthFo
     // sets hold only the per-frame matrices and the material textures.
     frameLayout = vk::createSetLayout(
         dev, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-              {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT}});  // morph weights
+              {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT}});  // morphed vertices
     materialLayout = vk::createSetLayout(
         dev, {{1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
               {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}});
@@ -216,14 +217,14 @@ void Renderer::Impl::ensureMatrixCapacity(Slot& slot, std::size_t count) {
 }
 
 void Renderer::Impl::ensureMorphCapacity(Slot& slot, std::size_t count) {
-    const VkDeviceSize needed = std::max<std::size_t>(count, 1) * sizeof(vk::MorphEntry);
-    if (slot.morphWeights.size >= needed) return;
-    VkDeviceSize size = std::max<VkDeviceSize>(needed, 2 * slot.morphWeights.size);
-    size = std::max<VkDeviceSize>(size, 256 * sizeof(vk::MorphEntry));
-    slot.morphWeights = vk::createBuffer(*device, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                         vk::MemoryUse::Upload);
+    const VkDeviceSize needed = std::max<std::size_t>(count, 1) * sizeof(glm::vec4);
+    if (slot.morphed.size >= needed) return;
+    VkDeviceSize size = std::max<VkDeviceSize>(needed, 2 * slot.morphed.size);
+    size = std::max<VkDeviceSize>(size, 256 * sizeof(glm::vec4));
+    slot.morphed = vk::createBuffer(*device, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                    vk::MemoryUse::Upload);
     vk::DescriptorWriter()
-        .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, slot.morphWeights.buffer.get(), size)
+        .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, slot.morphed.buffer.get(), size)
         .update(device->get(), slot.set);
 }
 
@@ -269,7 +270,7 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
     };
     std::vector<ViewDraws> views;
     matrices.clear();
-    morphEntries.clear();
+    morphed.clear();
     opaqueDraws.clear();
     blendDraws.clear();
     slot.labels.clear();
@@ -320,16 +321,20 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
                 }
             }
             const float distance = glm::length(glm::vec3(world[n][3]) - camera.eye);
-            // Morph targets: the node's non-zero weights (none: the draw skips mesh_morph.vert).
-            const auto morphBase = static_cast<std::uint32_t>(morphEntries.size());
-            if (scene.meshes[static_cast<std::size_t>(node.mesh)].targetCount() > 0)
-                vk::appendActiveWeights(resolveMorphWeights(scene, view.pose, static_cast<int>(n)), morphEntries);
-            const auto morphCount = static_cast<std::uint32_t>(morphEntries.size()) - morphBase;
-            for (const auto& primitive : gpu.primitives(node.mesh)) {
+            // Morph targets: the node's morphed vertices (none, or all weights zero: the draws
+            // skip mesh_morph.vert).
+            morphBases.clear();
+            if (draws.morphs && scene.meshes[static_cast<std::size_t>(node.mesh)].targetCount() > 0)
+                draws.morphs->appendMorphed(node.mesh, resolveMorphWeights(scene, view.pose, static_cast<int>(n)),
+                                            morphed, morphBases);
+            const auto& primitives = gpu.primitives(node.mesh);
+            for (std::size_t p = 0; p < primitives.size(); ++p) {
+                const vk::GpuPrimitive& primitive = primitives[p];
                 if (primitive.indexCount == 0) continue;
                 const bool skinned = primitive.skinned && jointCount > 0;
+                const std::uint32_t morphBase = p < morphBases.size() ? morphBases[p] : vk::kNoMorph;
                 Draw draw{&primitive, skinned ? skinBase : rigidBase, skinned ? jointCount : 0u,
-                          distance, morphBase, primitive.morphed ? morphCount : 0u};
+                          distance, morphBase == vk::kNoMorph ? 0u : morphBase, morphBase == vk::kNoMorph ? 0u : 1u};
                 if (gpu.material(primitive.material).alphaMode == AlphaMode::Blend)
                     blendDraws.push_back(draw);
                 else
@@ -347,9 +352,9 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
     ensureMatrixCapacity(slot, matrices.size());
     if (!matrices.empty())
         std::memcpy(slot.matrices.mapped, matrices.data(), matrices.size() * sizeof(glm::mat4));
-    ensureMorphCapacity(slot, morphEntries.size());
-    if (!morphEntries.empty())
-        std::memcpy(slot.morphWeights.mapped, morphEntries.data(), morphEntries.size() * sizeof(vk::MorphEntry));
+    ensureMorphCapacity(slot, morphed.size());
+    if (!morphed.empty())
+        std::memcpy(slot.morphed.mapped, morphed.data(), morphed.size() * sizeof(glm::vec4));
 
     // GPU pass.
     VkCommandBuffer cmd = slot.cmd;

@@ -20,16 +20,13 @@ layout(location = 4) in vec4 inWeights;
 layout(std430, set = 0, binding = 0) readonly buffer Matrices { mat4 matrices[]; };
 
 #ifdef MORPH
-// Morph targets (glTF 2.0 §3.7.2.2), applied before skinning: p = p0 + sum w_i dp_i, same
-// for the normal. Lavapipe has no descriptor indexing, so a scene's targets live in one
-// storage buffer (set 2): morphSlots[vertex] is where the vertex's displacements start
-// (position and normal of target t at +2t and +2t+1), or ~0u for a vertex no target moves
-// (most of a body: only the face moves). The draw's non-zero weights are (target, weight)
-// pairs in the per-frame buffer, pc.morphCount of them from pc.morphBase, so the loop costs
-// only the targets in use.
-layout(std430, set = 0, binding = 1) readonly buffer MorphWeights { uvec2 morphWeights[]; };
-layout(std430, set = 2, binding = 0) readonly buffer MorphDeltas { vec4 morphDeltas[]; };
-layout(std430, set = 2, binding = 1) readonly buffer MorphSlots { uint morphSlots[]; };
+// Morph targets (glTF 2.0 §3.7.2.2), applied before skinning. The CPU sums the weighted
+// displacements of the vertices some target moves (renderer/vk_morph.hpp): morphSlots[vertex]
+// is the vertex's index among its primitive's moved vertices, or ~0u when no target moves it
+// (most of a body: only the face moves); its morphed position and normal are then the pair at
+// pc.morphBase + 2 * slot of this frame's buffer.
+layout(std430, set = 0, binding = 1) readonly buffer Morphed { vec4 morphed[]; };
+layout(std430, set = 2, binding = 0) readonly buffer MorphSlots { uint morphSlots[]; };
 #endif
 
 layout(push_constant) uniform Push {
@@ -37,8 +34,8 @@ layout(push_constant) uniform Push {
     vec4 cameraPosition;
     uint matrixBase;
     uint jointCount;  // 0: rigid draw
-    uint morphBase;   // first (target, weight) pair of this draw in morphWeights
-    uint morphCount;  // number of pairs (0: the draw uses mesh.vert)
+    uint morphBase;   // this draw's first morphed vec4 in `morphed`
+    uint morphCount;  // 1: morphed (mesh_morph.vert), 0: not
 } pc;
 
 // The fragment shader needs the direction to the camera; camera - world is linear in the
@@ -53,14 +50,10 @@ void main() {
     vec3 position = inPosition;
     vec3 normal = inNormal;
 #ifdef MORPH
-    const uint block = morphSlots[gl_VertexIndex];  // gl_VertexIndex includes the vertex offset
-    if (block != 0xFFFFFFFFu) {
-        for (uint i = 0u; i < pc.morphCount; ++i) {
-            const uvec2 entry = morphWeights[pc.morphBase + i];
-            const float weight = uintBitsToFloat(entry.y);
-            position += weight * morphDeltas[block + 2u * entry.x].xyz;
-            normal += weight * morphDeltas[block + 2u * entry.x + 1u].xyz;
-        }
+    const uint slot = morphSlots[gl_VertexIndex];  // gl_VertexIndex includes the vertex offset
+    if (slot != 0xFFFFFFFFu) {
+        position = morphed[pc.morphBase + 2u * slot].xyz;
+        normal = morphed[pc.morphBase + 2u * slot + 1u].xyz;
     }
 #endif
     vec4 world;
