@@ -1,5 +1,5 @@
 // Morph targets on the CPU (glTF 2.0 §3.7.2.2): which weights a node has in a pose, and a
-// morphed vertex (for bounds; the GPU applies the same sum in shaders/mesh_vertex.glsl).
+// morphed vertex (for bounds; the renderer sums the same way per frame: vk_morph.cpp).
 #include "renderer/scene.hpp"
 
 #include <algorithm>
