@@ -7,6 +7,8 @@ function(signstim_add_shaders)
   set(out_dir ${CMAKE_CURRENT_BINARY_DIR}/generated/shaders)
   file(MAKE_DIRECTORY ${out_dir})
   set(headers)
+  # Files the shaders #include (GL_GOOGLE_include_directive): *.glsl beside them.
+  file(GLOB includes CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.glsl)
   foreach(src ${ARG_SOURCES})
     get_filename_component(name ${src} NAME)
     string(REPLACE "." "_" var ${name})
@@ -15,7 +17,7 @@ function(signstim_add_shaders)
       OUTPUT ${header}
       COMMAND Vulkan::glslangValidator --target-env vulkan1.3 -V --quiet
               --vn ${var}_spv -o ${header} ${CMAKE_CURRENT_SOURCE_DIR}/${src}
-      DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${src}
+      DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${src} ${includes}
       COMMENT "glslang ${name}"
       VERBATIM)
     list(APPEND headers ${header})

@@ -1,4 +1,5 @@
-// glTF 2.0 animation sampling (spec §3.11 and Appendix C: interpolation).
+// glTF 2.0 animation sampling (spec §3.11 and Appendix C: interpolation), morph-target
+// weights included.
 #include "renderer/scene.hpp"
 
 #include <algorithm>
@@ -58,6 +59,45 @@ glm::vec4 sample(const AnimationSampler& sampler, float t, bool rotation) {
     return value(k);
 }
 
+// Morph-target weights at `t` (glTF 2.0 Appendix C, component by component): `count`
+// weights per key. LINEAR is a lerp, STEP holds, CUBICSPLINE a Hermite spline.
+void sampleWeights(const AnimationSampler& sampler, float t, std::vector<float>& out) {
+    const std::size_t count = sampler.weightCount;
+    const std::vector<float>& times = sampler.times;
+    const bool cubic = sampler.interpolation == Interpolation::CubicSpline;
+    // Element e of key k's in-tangent (part 0), value (1) or out-tangent (2).
+    auto at = [&](std::size_t key, std::size_t part, std::size_t e) {
+        return sampler.weights[(cubic ? key * 3 + part : key) * count + e];
+    };
+    const std::size_t valuePart = cubic ? 1 : 0;
+    out.assign(count, 0.0f);
+    if (count == 0 || times.empty() || sampler.weights.size() < times.size() * count * (cubic ? 3 : 1)) return;
+    std::size_t k = 0;
+    float u = 0.0f, dt = 0.0f;
+    bool between = false;
+    if (times.size() == 1 || t <= times.front()) {
+        k = 0;
+    } else if (t >= times.back()) {
+        k = times.size() - 1;
+    } else {
+        k = static_cast<std::size_t>(std::upper_bound(times.begin(), times.end(), t) - times.begin()) - 1;
+        dt = times[k + 1] - times[k];
+        u = dt > 0.0f ? (t - times[k]) / dt : 1.0f;
+        between = sampler.interpolation != Interpolation::Step;
+    }
+    for (std::size_t e = 0; e < count; ++e) {
+        if (!between) {
+            out[e] = at(k, valuePart, e);
+        } else if (!cubic) {
+            out[e] = at(k, 0, e) + (at(k + 1, 0, e) - at(k, 0, e)) * u;
+        } else {
+            const float u2 = u * u, u3 = u2 * u;
+            out[e] = (2 * u3 - 3 * u2 + 1) * at(k, 1, e) + (u3 - 2 * u2 + u) * dt * at(k, 2, e) +
+                     (-2 * u3 + 3 * u2) * at(k + 1, 1, e) + (u3 - u2) * dt * at(k + 1, 0, e);
+        }
+    }
+}
+
 }  // namespace
 
 void applyAnimation(const Scene& scene, int animation, float timeSeconds, Pose& pose) {
@@ -73,6 +113,11 @@ void applyAnimation(const Scene& scene, int animation, float timeSeconds, Pose& 
         if (channel.sampler < 0 || static_cast<std::size_t>(channel.sampler) >= a.samplers.size()) continue;
         const AnimationSampler& sampler = a.samplers[static_cast<std::size_t>(channel.sampler)];
         if (sampler.times.empty()) continue;
+        if (channel.path == AnimationPath::Weights) {
+            if (pose.morphWeights.size() < scene.nodes.size()) pose.morphWeights.resize(scene.nodes.size());
+            sampleWeights(sampler, t, pose.morphWeights[static_cast<std::size_t>(channel.node)]);
+            continue;
+        }
         const bool rotation = channel.path == AnimationPath::Rotation;
         const glm::vec4 v = sample(sampler, t, rotation);
         Trs& local = pose.local[static_cast<std::size_t>(channel.node)];
@@ -80,6 +125,7 @@ void applyAnimation(const Scene& scene, int animation, float timeSeconds, Pose& 
             case AnimationPath::Translation: local.translation = glm::vec3(v); break;
             case AnimationPath::Scale: local.scale = glm::vec3(v); break;
             case AnimationPath::Rotation: local.rotation = glm::normalize(toQuat(v)); break;
+            case AnimationPath::Weights: break;  // handled above
         }
         pose.useRestMatrix[static_cast<std::size_t>(channel.node)] = false;
     }

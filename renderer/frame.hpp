@@ -33,7 +33,8 @@ std::string cameraProblem(const Camera& camera);
 
 struct View {
     int scene = 0;         // handle returned by Renderer::addScene
-    Pose pose;             // empty: the scene's rest pose
+    Pose pose;             // empty: the scene's rest pose; morph weights by target name
+                           // in pose.morphByName (docs/morph-targets.md)
     Camera camera;
     std::string label;     // caption drawn in the view's corner ("A" .. "D", "bent-B"); may be empty
 };

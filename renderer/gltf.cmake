@@ -4,6 +4,8 @@ target_sources(signstim_renderer PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/gltf_validate.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_loader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/animation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/morph.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_morph.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/image_io.cpp
   ${CMAKE_CURRENT_LIST_DIR}/video_encoder.cpp

@@ -1,6 +1,8 @@
 // glTF conversion: a validated model (gltf_validate.hpp) into the CPU Scene.
 #include "renderer/gltf_loader.hpp"
 
+#include "renderer/gltf_morph.hpp"
+
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -39,6 +41,7 @@ public:
         convertMaterials(scene);
         convertNodes(scene);
         convertMeshes(scene);
+        gltf_morph::convertNodeWeights(gltf_, scene);
         convertSkins(scene);
         checkSkinnedJoints(scene);
         convertAnimations(scene);
@@ -268,6 +271,7 @@ private:
         for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
             Mesh mesh;
             mesh.name = model_.meshes[m].name;
+            gltf_morph::convertMeshMorphs(gltf_, m, mesh);
             for (std::size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) {
                 const tinygltf::Primitive& prim = model_.meshes[m].primitives[p];
                 const std::string f = at(at("meshes", m) + "/primitives", p);
@@ -277,7 +281,6 @@ private:
                     warn(f + ": points/lines primitive skipped (only triangles are drawn)");
                     continue;
                 }
-                if (!prim.targets.empty()) warn(f + ": morph targets ignored");
                 const auto attribute = [&](const char* name) {
                     const auto it = prim.attributes.find(name);
                     return it == prim.attributes.end() ? -1 : it->second;
@@ -362,6 +365,7 @@ private:
                         out.vertices[v].normal = length > 1e-12f ? n / length : glm::vec3(0.0f, 0.0f, 1.0f);
                     }
                 }
+                gltf_morph::convertPrimitiveTargets(gltf_, m, p, out, warnings_);
                 mesh.primitives.push_back(std::move(out));
             }
             scene.meshes.push_back(std::move(mesh));
@@ -506,6 +510,8 @@ private:
                     for (int c = 0; c < width; ++c) value[c] = static_cast<float>(values[v * width + static_cast<std::size_t>(c)]);
                     so.values.push_back(value);
                 }
+                if (output.type == TINYGLTF_TYPE_SCALAR)  // morph weights; checked per channel
+                    so.weights.assign(values.begin(), values.end());
                 if (!so.times.empty() && so.times.back() >= out.durationSeconds) {
                     out.durationSeconds = so.times.back();
                     out.durationSource = at("accessors", static_cast<std::size_t>(sampler.input));
@@ -527,8 +533,8 @@ private:
                     co.path = AnimationPath::Rotation;
                     needed = TINYGLTF_TYPE_VEC4;
                 } else if (channel.target_path == "weights") {
-                    warn(cf + ": morph-target weights animation ignored");
-                    continue;
+                    co.path = AnimationPath::Weights;
+                    needed = TINYGLTF_TYPE_SCALAR;
                 } else {
                     fail(cf + "/target/path", "unknown path \"" + channel.target_path + "\"");
                 }
@@ -538,6 +544,8 @@ private:
                 // (needs converted data: the node's restMatrix)
                 if (scene.nodes[static_cast<std::size_t>(co.node)].restMatrix)
                     fail(cf + "/target/node", "animated nodes must not use `matrix` (glTF 2.0 §3.7.3.2)");
+                if (co.path == AnimationPath::Weights)
+                    gltf_morph::convertWeightsChannel(gltf_, scene, a, c, out.samplers[static_cast<std::size_t>(co.sampler)]);
                 if (co.path == AnimationPath::Rotation) isRotation[static_cast<std::size_t>(co.sampler)] = 1;
                 out.channels.push_back(co);
             }

@@ -15,7 +15,9 @@
 // Deviations from the glTF spec, chosen for stimuli rendering:
 //  - Missing normals are computed smooth (area weighted over shared vertices), not flat.
 //  - Points and lines primitives are skipped (warning); strips and fans become lists.
-//  - Morph targets, cameras, lights and "weights" animation channels are ignored (warning).
+//  - Cameras and lights are ignored. Morph targets: POSITION and NORMAL are applied (with
+//    mesh/node weights, "weights" channels and extras.targetNames: gltf_morph.hpp); other
+//    target attributes (TANGENT, TEXCOORD_n, COLOR_n) are ignored (warning).
 #include "renderer/gltf_validate.hpp"
 #include "renderer/scene.hpp"
 

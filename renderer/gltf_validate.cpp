@@ -810,12 +810,18 @@ std::vector<double> ValidatedGltf::readAccessor(int index, std::initializer_list
         const std::uint8_t* indices = viewData(a.sparse.indices.bufferView) + a.sparse.indices.byteOffset;
         const std::uint8_t* sparseValues = viewData(a.sparse.values.bufferView) + a.sparse.values.byteOffset;
         const int indexSize = componentSize(a.sparse.indices.componentType);
+        std::uint64_t previous = 0;
         for (int s = 0; s < a.sparse.count; ++s) {
             const auto target = static_cast<std::uint64_t>(
                 readComponent(indices + static_cast<std::size_t>(s) * indexSize, a.sparse.indices.componentType, false));
             if (target >= a.count)
                 fail(f + "/sparse/indices", "index " + std::to_string(target) + " out of range (count " +
                                                 std::to_string(a.count) + ")");
+            // glTF 2.0 §3.6.2.3: sparse indices MUST strictly increase.
+            if (s > 0 && target <= previous)
+                fail(f + "/sparse/indices", "index " + std::to_string(target) + " (entry " + std::to_string(s) +
+                                                ") does not increase strictly after " + std::to_string(previous));
+            previous = target;
             readElement(sparseValues + static_cast<std::size_t>(s) * components * size, static_cast<std::size_t>(target));
         }
     }

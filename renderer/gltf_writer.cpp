@@ -180,12 +180,35 @@ private:
                 json out = {{"attributes", attributes}, {"mode", 4}};
                 if (!p.indices.empty()) out["indices"] = addAccessor(p.indices, kUnsignedInt, 1, "SCALAR", elementArrayBuffer);
                 if (p.material >= 0) out["material"] = p.material;
+                if (!p.targets.empty()) out["targets"] = morphTargets(p);
                 primitives.push_back(out);
             }
             json out = {{"primitives", primitives}};
             if (!mesh.name.empty()) out["name"] = mesh.name;
+            if (mesh.targetCount() > 0 && mesh.weights.size() == mesh.targetCount()) out["weights"] = mesh.weights;
+            if (mesh.targetCount() > 0 && mesh.targetNames.size() == mesh.targetCount())
+                out["extras"] = {{"targetNames", mesh.targetNames}};  // the exporters' convention
             doc_["meshes"].push_back(out);
         }
+    }
+
+    // Dense POSITION (with the min/max glTF requires) and NORMAL displacements per target.
+    json morphTargets(const Primitive& p) {
+        json targets = json::array();
+        for (const MorphTarget& target : p.targets) {
+            json out = json::object();
+            for (const auto* attribute : {&target.position, &target.normal}) {
+                if (attribute->empty()) continue;
+                if (attribute->size() != p.vertices.size())
+                    throw std::invalid_argument("writeGltf: a morph target does not cover every vertex");
+                std::vector<float> values;
+                for (const glm::vec3& d : *attribute) values.insert(values.end(), {d.x, d.y, d.z});
+                const bool position = attribute == &target.position;
+                out[position ? "POSITION" : "NORMAL"] = addAccessor(values, kFloat, 3, "VEC3", 34962, position);
+            }
+            targets.push_back(out);
+        }
+        return targets;
     }
 
     void writeNodes() {
@@ -195,6 +218,7 @@ private:
             if (!node.children.empty()) out["children"] = node.children;
             if (node.mesh >= 0) out["mesh"] = node.mesh;
             if (node.skin >= 0) out["skin"] = node.skin;
+            if (!node.weights.empty()) out["weights"] = node.weights;
             if (node.restMatrix) {
                 out["matrix"] = floats(&(*node.restMatrix)[0][0], 16);
             } else {
@@ -232,6 +256,14 @@ private:
             json samplers = json::array(), channels = json::array();
             for (std::size_t s = 0; s < animation.samplers.size(); ++s) {
                 const AnimationSampler& sampler = animation.samplers[s];
+                const char* interpolationName = sampler.interpolation == Interpolation::Linear ? "LINEAR"
+                                                : sampler.interpolation == Interpolation::Step ? "STEP" : "CUBICSPLINE";
+                if (sampler.weightCount > 0) {  // morph weights: SCALAR, weightCount per key
+                    samplers.push_back({{"input", addAccessor(sampler.times, kFloat, 1, "SCALAR", 0, true)},
+                                        {"output", addAccessor(sampler.weights, kFloat, 1, "SCALAR")},
+                                        {"interpolation", interpolationName}});
+                    continue;
+                }
                 const int width = rotation[s] ? 4 : 3;
                 std::vector<float> values;
                 for (const glm::vec4& v : sampler.values) values.insert(values.end(), &v[0], &v[0] + width);
@@ -243,7 +275,8 @@ private:
             }
             for (const AnimationChannel& c : animation.channels) {
                 const char* path = c.path == AnimationPath::Translation ? "translation"
-                                   : c.path == AnimationPath::Rotation  ? "rotation" : "scale";
+                                   : c.path == AnimationPath::Rotation  ? "rotation"
+                                   : c.path == AnimationPath::Weights   ? "weights" : "scale";
                 channels.push_back({{"sampler", c.sampler}, {"target", {{"node", c.node}, {"path", path}}}});
             }
             json out = {{"samplers", samplers}, {"channels", channels}};

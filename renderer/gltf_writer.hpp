@@ -1,7 +1,8 @@
 #pragma once
 // glTF 2.0 writer for the CPU Scene: `.glb` (binary) or `.gltf` with the buffer embedded as a
 // base64 data URI, chosen by extension. Writes nodes (TRS or matrix), meshes, materials,
-// textures (images PNG-encoded), skins and animations. Deterministic: the same Scene gives a
+// textures (images PNG-encoded), skins, morph targets (dense; names as
+// mesh.extras.targetNames) and animations. Deterministic: the same Scene gives a
 // byte-identical file. Atomic (temporary file, then rename).
 #include "renderer/scene.hpp"
 

@@ -12,12 +12,14 @@
 #include "renderer/vk_descriptors.hpp"
 #include "renderer/vk_device.hpp"
 #include "renderer/vk_instance.hpp"
+#include "renderer/vk_morph.hpp"
 #include "renderer/vk_pipelines.hpp"
 #include "renderer/vk_readback.hpp"
 #include "renderer/vk_scene.hpp"
 #include "renderer/vk_targets.hpp"
 
 #include "shaders/mesh.frag.spv.h"
+#include "shaders/mesh_morph.vert.spv.h"
 #include "shaders/mesh.vert.spv.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -40,7 +42,8 @@ struct PushConstants {
     glm::vec4 cameraPosition;
     std::uint32_t matrixBase = 0;
     std::uint32_t jointCount = 0;  // 0: rigid
-    std::uint32_t padding[2] = {0, 0};
+    std::uint32_t morphBase = 0;   // the draw's first morphed vec4 (vk_morph.hpp)
+    std::uint32_t morphCount = 0;  // 1: morphed (mesh_morph.vert), 0: not
 };
 
 std::string joinCounts(const std::vector<std::uint32_t>& counts) {
@@ -65,82 +68,18 @@ struct Draw {
     const vk::GpuPrimitive* primitive;
     std::uint32_t matrixBase, jointCount;  // jointCount 0: rigid
     float distance;
+    std::uint32_t morphBase = 0, morphCount = 0;  // morphCount 1: morphed, 0: not
 };
 
 }  // namespace
 
-namespace vk {
-
-// The lighting part of mesh.frag's specialisation constants: directions towards the lights.
-void setLighting(const Lighting& lighting, FragmentConstants& constants) {
-    glm::vec3 key = lighting.keyDirection;
-    if (glm::length(key) < 1e-6f) key = {-0.3f, -0.5f, -1.0f};
-    key = glm::normalize(key);
-    // Fill mirrors the key to the other side and comes in nearly level; the rim comes from
-    // behind and above.
-    glm::vec3 fill = glm::normalize(glm::vec3(-key.x * 2.0f + (key.x == 0.0f ? 0.5f : 0.0f),
-                                              key.y * 0.2f, key.z));
-    glm::vec3 rim = glm::normalize(glm::vec3(-key.x * 0.5f, -0.6f, -key.z));
-    for (int c = 0; c < 3; ++c) {
-        constants.toKey[c] = -key[c];
-        constants.toFill[c] = -fill[c];
-        constants.toRim[c] = -rim[c];
-    }
-    constants.keyIntensity = lighting.keyIntensity;
-    constants.fillIntensity = lighting.fillIntensity;
-    constants.rimIntensity = lighting.rimIntensity;
-    constants.ambient = lighting.ambient;
-}
-
-PipelineDesc meshPipelineDesc(VkShaderModule vertex, VkShaderModule fragment, VkFormat colorFormat,
-                              VkFormat depthFormat, std::uint32_t msaa) {
-    PipelineDesc desc;
-    desc.vertex = vertex;
-    desc.fragment = fragment;
-    desc.bindings = {{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.attributes = {
-        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, position))},
-        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, normal))},
-        {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<std::uint32_t>(offsetof(Vertex, uv))},
-        {3, 0, VK_FORMAT_R32G32B32A32_UINT, static_cast<std::uint32_t>(offsetof(Vertex, joints))},
-        {4, 0, VK_FORMAT_R32G32B32A32_SFLOAT,
-         static_cast<std::uint32_t>(offsetof(Vertex, weights))}};
-    desc.colorFormat = colorFormat;
-    desc.depthFormat = depthFormat;
-    desc.samples = static_cast<VkSampleCountFlagBits>(msaa);
-    return desc;
-}
-
-UniquePipeline createMeshPipeline(VkDevice device, VkPipelineLayout layout, const PipelineDesc& mesh,
-                                  const GpuMaterial& material, const FragmentConstants& constants,
-                                  bool skinned) {
-    std::vector<VkSpecializationMapEntry> entries(kFragmentConstantCount);
-    for (std::uint32_t id = 0; id < kFragmentConstantCount; ++id)
-        entries[id] = {id, id * 4u, 4u};  // bools are 32-bit in SPIR-V, like the floats
-    const VkSpecializationInfo specialization{kFragmentConstantCount, entries.data(),
-                                              sizeof(constants), &constants};
-    const VkBool32 vertexConstant = skinned ? VK_TRUE : VK_FALSE;  // SKINNED in mesh.vert
-    const VkSpecializationMapEntry vertexEntry{0, 0, sizeof(VkBool32)};
-    const VkSpecializationInfo vertexSpecialization{1, &vertexEntry, sizeof(VkBool32),
-                                                    &vertexConstant};
-    PipelineDesc desc = mesh;
-    desc.vertexSpecialization = &vertexSpecialization;
-    desc.fragmentSpecialization = &specialization;
-    desc.dynamicCullMode = false;
-    desc.cullMode = material.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-    desc.blend = material.alphaMode == AlphaMode::Blend;
-    desc.depthWrite = !desc.blend;  // blended surfaces test against, but do not hide, others
-    return createGraphicsPipeline(device, layout, desc);
-}
-
-}  // namespace vk
 
 struct Renderer::Impl {
     struct Slot {
         std::unique_ptr<vk::OffscreenTarget> target;
         VkCommandBuffer cmd = VK_NULL_HANDLE;
         vk::UniqueFence fence;
-        vk::Buffer matrices;
+        vk::Buffer matrices, morphed;
         VkDescriptorSet set = VK_NULL_HANDLE;
         std::vector<std::pair<LabelRect, std::string>> labels;
     };
@@ -150,22 +89,25 @@ struct Renderer::Impl {
     std::unique_ptr<vk::Instance> instance;
     std::unique_ptr<vk::Device> device;
     std::unique_ptr<vk::CommandPool> commands;
-    vk::UniqueDescriptorSetLayout frameLayout, materialLayout;
+    vk::UniqueDescriptorSetLayout frameLayout, materialLayout, morphLayout;
     vk::UniquePipelineLayout pipelineLayout;
-    vk::UniqueShaderModule vertexShader, fragmentShader;
+    vk::UniqueShaderModule vertexShader, morphVertexShader, fragmentShader;
     vk::PipelineDesc pipelineDesc;
     // One pipeline per distinct (specialisation constants, skinned, double-sided): materials
     // with equal factors share one, across scenes too.
     std::map<std::vector<std::uint32_t>, vk::UniquePipeline> pipelines;
-    std::map<std::pair<const vk::GpuMaterial*, bool>, VkPipeline> materialPipelines;  // cache
+    std::map<std::tuple<const vk::GpuMaterial*, bool, bool>, VkPipeline> materialPipelines;  // cache
     vk::UniqueDescriptorPool framePool;
     std::vector<Slot> slots;
     std::deque<std::size_t> pending;
     std::size_t nextSlot = 0;
     std::vector<std::unique_ptr<vk::GpuScene>> scenes;
+    std::vector<std::unique_ptr<vk::GpuMorphs>> morphs;  // per scene; null: no morph targets
 
     // Scratch reused across frames.
     std::vector<glm::mat4> matrices, world, joints;
+    std::vector<glm::vec4> morphed;            // the frame's morphed (position, normal) pairs
+    std::vector<std::uint32_t> morphBases;     // per primitive of the node being recorded
     std::vector<Draw> opaqueDraws, blendDraws;
 
     ~Impl() {
@@ -174,14 +116,22 @@ struct Renderer::Impl {
 
     void checkOptions(const vk::PhysicalDevice& physical);
     void createPipelineLayout(VkFormat colorFormat, VkFormat depthFormat);
-    VkPipeline pipelineFor(const vk::GpuMaterial& material, bool skinned);
+    VkPipeline pipelineFor(const vk::GpuMaterial& material, bool skinned, bool morphed = false);
     void validateFrame(const Frame& frame) const;
     void recordFrame(Slot& slot, const Frame& frame);
     void ensureMatrixCapacity(Slot& slot, std::size_t count);
+    void ensureMorphCapacity(Slot& slot, std::size_t count);
 };
 
 void Renderer::Impl::checkOptions(const vk::PhysicalDevice& physical) {
     const auto& limits = device->properties().limits;
+    // The mesh pipeline layout: 3 sets (frame, material, morph targets), 3 storage buffers
+    // in the vertex stage, the push constants. Vulkan's guaranteed minimums (4, 4, 128 bytes)
+    // cover them; a device below them is refused here rather than failing at draw time.
+    if (limits.maxBoundDescriptorSets < 3 || limits.maxPerStageDescriptorStorageBuffers < 3 ||
+        limits.maxPushConstantsSize < sizeof(PushConstants))
+        throw EnvironmentError("device '" + info.name + "' is below Vulkan's minimum limits (descriptor sets, "
+                               "storage buffers per stage, push constant size)");
     if (options.width == 0 || options.height == 0 ||
         options.width > limits.maxImageDimension2D || options.height > limits.maxImageDimension2D)
         throw InputError("<command line>", 0, "--size",
@@ -217,35 +167,41 @@ void Renderer::Impl::createPipelineLayout(VkFormat colorFormat, VkFormat depthFo
     // Lighting and material factors are specialisation constants (see mesh.frag), so the
     // sets hold only the per-frame matrices and the material textures.
     frameLayout = vk::createSetLayout(
-        dev, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT}});
+        dev, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+              {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT}});  // morphed vertices
     materialLayout = vk::createSetLayout(
         dev, {{1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
               {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}});
+    morphLayout = vk::createMorphSetLayout(dev);
     pipelineLayout = vk::createPipelineLayout(
-        dev, {frameLayout.get(), materialLayout.get()},
+        dev, {frameLayout.get(), materialLayout.get(), morphLayout.get()},
         {{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(PushConstants)}});
 
     vertexShader = vk::createShaderModule(dev, mesh_vert_spv, sizeof(mesh_vert_spv));
+    morphVertexShader = vk::createShaderModule(dev, mesh_morph_vert_spv, sizeof(mesh_morph_vert_spv));
     fragmentShader = vk::createShaderModule(dev, mesh_frag_spv, sizeof(mesh_frag_spv));
     pipelineDesc = vk::meshPipelineDesc(vertexShader.get(), fragmentShader.get(), colorFormat,
                                         depthFormat, options.msaa);
 }
 
-VkPipeline Renderer::Impl::pipelineFor(const vk::GpuMaterial& material, bool skinned) {
-    auto cached = materialPipelines.find({&material, skinned});
+VkPipeline Renderer::Impl::pipelineFor(const vk::GpuMaterial& material, bool skinned, bool morphed) {
+    const auto cacheKey = std::make_tuple(&material, skinned, morphed);
+    auto cached = materialPipelines.find(cacheKey);
     if (cached != materialPipelines.end()) return cached->second;
     vk::FragmentConstants constants = material.constants;
     vk::setLighting(options.lighting, constants);
     std::vector<std::uint32_t> key(vk::kFragmentConstantCount + 1);
     std::memcpy(key.data(), &constants, sizeof(constants));
-    key.back() = (skinned ? 1u : 0u) | (material.doubleSided ? 2u : 0u);
+    key.back() = (skinned ? 1u : 0u) | (material.doubleSided ? 2u : 0u) | (morphed ? 4u : 0u);
     auto found = pipelines.find(key);
-    if (found != pipelines.end()) return materialPipelines[{&material, skinned}] = found->second.get();
+    if (found != pipelines.end()) return materialPipelines[cacheKey] = found->second.get();
 
-    auto pipeline = vk::createMeshPipeline(device->get(), pipelineLayout.get(), pipelineDesc,
+    vk::PipelineDesc desc = pipelineDesc;
+    if (morphed) desc.vertex = morphVertexShader.get();  // mesh_morph.vert
+    auto pipeline = vk::createMeshPipeline(device->get(), pipelineLayout.get(), desc,
                                            material, constants, skinned);
     VkPipeline handle = pipelines.emplace(std::move(key), std::move(pipeline)).first->second.get();
-    return materialPipelines[{&material, skinned}] = handle;
+    return materialPipelines[cacheKey] = handle;
 }
 
 void Renderer::Impl::ensureMatrixCapacity(Slot& slot, std::size_t count) {
@@ -257,6 +213,18 @@ void Renderer::Impl::ensureMatrixCapacity(Slot& slot, std::size_t count) {
                                      vk::MemoryUse::Upload);
     vk::DescriptorWriter()
         .buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, slot.matrices.buffer.get(), size)
+        .update(device->get(), slot.set);
+}
+
+void Renderer::Impl::ensureMorphCapacity(Slot& slot, std::size_t count) {
+    const VkDeviceSize needed = std::max<std::size_t>(count, 1) * sizeof(glm::vec4);
+    if (slot.morphed.size >= needed) return;
+    VkDeviceSize size = std::max<VkDeviceSize>(needed, 2 * slot.morphed.size);
+    size = std::max<VkDeviceSize>(size, 256 * sizeof(glm::vec4));
+    slot.morphed = vk::createBuffer(*device, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                    vk::MemoryUse::Upload);
+    vk::DescriptorWriter()
+        .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, slot.morphed.buffer.get(), size)
         .update(device->get(), slot.set);
 }
 
@@ -286,6 +254,8 @@ void Renderer::Impl::validateFrame(const Frame& frame) const {
                                  std::to_string(scene.nodes.size()) + " nodes");
         if (const std::string problem = cameraProblem(view.camera); !problem.empty())
             throw InputError("<frame>", 0, field + ".camera", problem);
+        if (const std::string problem = morphProblem(scene, view.pose); !problem.empty())
+            throw InputError("<frame>", 0, field + ".pose", problem);
     }
 }
 
@@ -295,10 +265,12 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
         LabelRect cell;
         PushConstants push;
         const vk::GpuScene* scene;
+        const vk::GpuMorphs* morphs;
         std::size_t opaqueBegin, opaqueEnd, blendBegin, blendEnd;
     };
     std::vector<ViewDraws> views;
     matrices.clear();
+    morphed.clear();
     opaqueDraws.clear();
     blendDraws.clear();
     slot.labels.clear();
@@ -309,6 +281,7 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
         ViewDraws draws{};
         draws.cell = cellOf(options.width, options.height, frame.columns, frame.rows, v);
         draws.scene = &gpu;
+        draws.morphs = morphs[static_cast<std::size_t>(view.scene)].get();
         if (!view.label.empty()) slot.labels.emplace_back(draws.cell, view.label);
 
         const Camera& camera = view.camera;
@@ -348,11 +321,20 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
                 }
             }
             const float distance = glm::length(glm::vec3(world[n][3]) - camera.eye);
-            for (const auto& primitive : gpu.primitives(node.mesh)) {
+            // Morph targets: the node's morphed vertices (none, or all weights zero: the draws
+            // skip mesh_morph.vert).
+            morphBases.clear();
+            if (draws.morphs && scene.meshes[static_cast<std::size_t>(node.mesh)].targetCount() > 0)
+                draws.morphs->appendMorphed(node.mesh, resolveMorphWeights(scene, view.pose, static_cast<int>(n)),
+                                            morphed, morphBases);
+            const auto& primitives = gpu.primitives(node.mesh);
+            for (std::size_t p = 0; p < primitives.size(); ++p) {
+                const vk::GpuPrimitive& primitive = primitives[p];
                 if (primitive.indexCount == 0) continue;
                 const bool skinned = primitive.skinned && jointCount > 0;
+                const std::uint32_t morphBase = p < morphBases.size() ? morphBases[p] : vk::kNoMorph;
                 Draw draw{&primitive, skinned ? skinBase : rigidBase, skinned ? jointCount : 0u,
-                          distance};
+                          distance, morphBase == vk::kNoMorph ? 0u : morphBase, morphBase == vk::kNoMorph ? 0u : 1u};
                 if (gpu.material(primitive.material).alphaMode == AlphaMode::Blend)
                     blendDraws.push_back(draw);
                 else
@@ -370,6 +352,9 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
     ensureMatrixCapacity(slot, matrices.size());
     if (!matrices.empty())
         std::memcpy(slot.matrices.mapped, matrices.data(), matrices.size() * sizeof(glm::mat4));
+    ensureMorphCapacity(slot, morphed.size());
+    if (!morphed.empty())
+        std::memcpy(slot.morphed.mapped, morphed.data(), morphed.size() * sizeof(glm::vec4));
 
     // GPU pass.
     VkCommandBuffer cmd = slot.cmd;
@@ -395,6 +380,11 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
         VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
         vkCmdBindIndexBuffer(cmd, view.scene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
+        if (const vk::GpuMorphs* morph = view.morphs) {
+            VkDescriptorSet morphSet = morph->set();
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout.get(), 2, 1,
+                                    &morphSet, 0, nullptr);
+        }
 
         auto drawRange = [&](const std::vector<Draw>& draws, std::size_t from, std::size_t to) {
             PushConstants push = view.push;
@@ -403,7 +393,7 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
             for (std::size_t i = from; i < to; ++i) {
                 const Draw& draw = draws[i];
                 const vk::GpuMaterial& material = view.scene->material(draw.primitive->material);
-                VkPipeline pipeline = pipelineFor(material, draw.jointCount > 0);
+                VkPipeline pipeline = pipelineFor(material, draw.jointCount > 0, draw.morphCount > 0);
                 if (pipeline != bound) {
                     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
                     bound = pipeline;
@@ -415,6 +405,8 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
                 }
                 push.matrixBase = draw.matrixBase;
                 push.jointCount = draw.jointCount;
+                push.morphBase = draw.morphBase;
+                push.morphCount = draw.morphCount;
                 vkCmdPushConstants(cmd, pipelineLayout.get(),
                                    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                    sizeof(PushConstants), &push);
@@ -458,7 +450,7 @@ Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl
 
     r.framePool = vk::createDescriptorPool(
         r.device->get(), kFramesInFlight,
-        {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}});
+        {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}});
     vk::TargetFormats formats{colorFormat, depthFormat,
                               static_cast<VkSampleCountFlagBits>(options.msaa)};
     r.slots.resize(kFramesInFlight);
@@ -469,6 +461,7 @@ Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl
         slot.fence = vk::createFence(*r.device, false);
         slot.set = vk::allocateSet(r.device->get(), r.framePool.get(), r.frameLayout.get());
         r.ensureMatrixCapacity(slot, 256);
+        r.ensureMorphCapacity(slot, 256);
     }
 }
 
@@ -501,12 +494,21 @@ int Renderer::addScene(const Scene& scene) {
     // Compile the scene's pipeline variants now rather than on the first frame: every
     // material rigid, and skinned where a skinned primitive on a skinned node uses it.
     const vk::GpuScene& gpu = *impl_->scenes.back();
+    bool hasTargets = false;
+    for (const Mesh& mesh : scene.meshes) hasTargets = hasTargets || mesh.targetCount() > 0;
+    impl_->morphs.push_back(hasTargets ? std::make_unique<vk::GpuMorphs>(*impl_->device, *impl_->commands, gpu,
+                                                                         impl_->morphLayout.get())
+                                       : nullptr);
     for (const auto& material : gpu.materials()) impl_->pipelineFor(material, false);
+    // The same for morphed primitives (mesh_morph.vert), skinned or not.
     for (const Node& node : scene.nodes) {
         if (node.mesh < 0 || node.mesh >= static_cast<int>(scene.meshes.size())) continue;
-        if (node.skin < 0 || node.skin >= static_cast<int>(scene.skins.size())) continue;
-        for (const auto& primitive : gpu.primitives(node.mesh))
-            if (primitive.skinned) impl_->pipelineFor(gpu.material(primitive.material), true);
+        const bool hasSkin = node.skin >= 0 && node.skin < static_cast<int>(scene.skins.size());
+        for (const auto& primitive : gpu.primitives(node.mesh)) {
+            const bool skinned = hasSkin && primitive.skinned;
+            if (skinned) impl_->pipelineFor(gpu.material(primitive.material), true);
+            if (primitive.morphed) impl_->pipelineFor(gpu.material(primitive.material), skinned, true);
+        }
     }
     return static_cast<int>(impl_->scenes.size() - 1);
 }

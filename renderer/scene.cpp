@@ -119,10 +119,14 @@ Bounds computeBounds(const Scene& scene, const Pose& pose) {
         if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= scene.meshes.size()) continue;
         const bool hasSkin = node.skin >= 0 && static_cast<std::size_t>(node.skin) < scene.skins.size();
         if (hasSkin) computeJointMatrices(scene, node.skin, world, joints);
+        const std::vector<float> weights = resolveMorphWeights(scene, pose, static_cast<int>(n));
         for (const Primitive& primitive : scene.meshes[static_cast<std::size_t>(node.mesh)].primitives) {
             const bool skinned = hasSkin && primitive.skinned;
-            for (const Vertex& v : primitive.vertices) {
-                const glm::vec4 p(v.position, 1.0f);
+            for (std::size_t i = 0; i < primitive.vertices.size(); ++i) {
+                const Vertex& v = primitive.vertices[i];
+                glm::vec3 position = v.position, normal;
+                if (!weights.empty()) morphVertex(primitive, i, weights, position, normal);  // glTF: morph, then skin
+                const glm::vec4 p(position, 1.0f);
                 if (!skinned) {
                     bounds.add(glm::vec3(world[n] * p));
                     continue;

@@ -11,6 +11,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,16 +35,32 @@ struct Vertex {
     glm::vec4 weights{1.0f, 0.0f, 0.0f, 0.0f};  // sum 1 when skinned
 };
 
+// glTF 2.0 §3.7.2.2 morph target: per-vertex displacements added to the base attributes,
+// weighted (p = p0 + sum w_i dp_i), before skinning. Dense, indexed like
+// Primitive::vertices (sparse accessors are expanded when loaded); empty: no such target
+// attribute (zero displacement).
+struct MorphTarget {
+    std::vector<glm::vec3> position{};
+    std::vector<glm::vec3> normal{};
+};
+
 struct Primitive {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;  // triangle list (non-indexed input is expanded)
     int material = -1;                   // -1: default material (white, rough, dielectric)
     bool skinned = false;                // JOINTS_0/WEIGHTS_0 were present
+    std::vector<MorphTarget> targets{};  // every primitive of a mesh has the same count
 };
 
 struct Mesh {
     std::string name;
     std::vector<Primitive> primitives;
+    // Morph targets: default weights (glTF mesh.weights; zeros when the file has none) and
+    // the targets' names (mesh.extras.targetNames, the common exporter convention; empty
+    // when the file names none). Both have the primitives' target count, or are empty.
+    std::vector<float> weights{};
+    std::vector<std::string> targetNames{};
+    std::size_t targetCount() const { return primitives.empty() ? 0 : primitives.front().targets.size(); }
 };
 
 struct ImageData {  // decoded, 8-bit RGBA
@@ -84,6 +102,7 @@ struct Node {
     std::optional<glm::mat4> restMatrix;     // glTF `matrix` (not animatable) when given
     int mesh = -1;
     int skin = -1;
+    std::vector<float> weights{};  // glTF node.weights (overrides the mesh's); usually empty
 };
 
 struct Skin {
@@ -94,13 +113,17 @@ struct Skin {
 };
 
 enum class Interpolation { Linear, Step, CubicSpline };
-enum class AnimationPath { Translation, Rotation, Scale };
+enum class AnimationPath { Translation, Rotation, Scale, Weights };
 
 struct AnimationSampler {
     std::vector<float> times;       // seconds, strictly increasing
     std::vector<glm::vec4> values;  // vec3 in xyz, or quaternion as (x, y, z, w);
                                     // CubicSpline: 3 per key (in-tangent, value, out-tangent)
     Interpolation interpolation = Interpolation::Linear;
+    // Morph-target weights (a SCALAR output): `weightCount` values per key, key after key
+    // (CubicSpline: in-tangents, values, out-tangents, each weightCount long, per key).
+    std::vector<float> weights{};
+    std::size_t weightCount = 0;
 };
 
 struct AnimationChannel {
@@ -134,10 +157,23 @@ struct Scene {
     int findAnimation(std::string_view name) const;     // -1 if absent
 };
 
+// Morph weights set by name apply to every mesh target of that name; they are clamped to
+// [kMorphWeightMin, kMorphWeightMax]. glTF itself allows any finite weight; [0, 1] is the
+// range in which a named target (ARKit's blend shapes, e.g. "jawOpen") means anything.
+constexpr float kMorphWeightMin = 0.0f, kMorphWeightMax = 1.0f;
+
 // One local transform per node (indexed like Scene::nodes). This is the per-frame data.
 struct Pose {
     std::vector<Trs> local;
     std::vector<bool> useRestMatrix;  // node keeps its glTF `matrix` (no TRS override)
+    // Morph weights per node (indexed like Scene::nodes; an inner vector has the node's mesh
+    // target count). Empty (or an empty inner vector): the node's default weights
+    // (node.weights, else mesh.weights). Animations with "weights" channels fill it.
+    std::vector<std::vector<float>> morphWeights{};
+    // Morph weights by target name (mesh.extras.targetNames), applied after morphWeights to
+    // every mesh that has a target of that name, clamped to [kMorphWeightMin, kMorphWeightMax];
+    // a name no mesh has is ignored. The seam for whoever drives a face by name.
+    std::map<std::string, float, std::less<>> morphByName{};
 };
 
 struct Bounds {
@@ -160,7 +196,21 @@ void computeWorldTransforms(const Scene& scene, const Pose& pose, std::vector<gl
 void computeJointMatrices(const Scene& scene, int skin, const std::vector<glm::mat4>& world,
                           std::vector<glm::mat4>& jointMatrices);
 
-// Axis-aligned bounds of every mesh vertex in world space for `pose` (skinning applied).
+// The morph weights of node `node` for `pose` (empty when its mesh has no targets): the
+// pose's per-node weights, else node.weights, else mesh.weights, else zeros; then the
+// pose's named weights (clamped). Non-finite weights count as 0.
+std::vector<float> resolveMorphWeights(const Scene& scene, const Pose& pose, int node);
+
+// The position and normal of vertex `v` of `primitive` with morph `weights` applied
+// (glTF: before skinning). The normal is not renormalised.
+void morphVertex(const Primitive& primitive, std::size_t v, const std::vector<float>& weights,
+                 glm::vec3& position, glm::vec3& normal);
+
+// Empty when `pose`'s morph weights fit `scene` (morphWeights empty or one entry per node,
+// each empty or of its mesh's target count; named weights finite); otherwise what is wrong.
+std::string morphProblem(const Scene& scene, const Pose& pose);
+
+// Axis-aligned bounds of every mesh vertex in world space for `pose` (morphs and skinning applied).
 Bounds computeBounds(const Scene& scene, const Pose& pose);
 
 }  // namespace signstim::render

@@ -14,19 +14,6 @@ namespace {
 
 static_assert(sizeof(Vertex) == 64, "shaders/mesh.vert expects the 64-byte render::Vertex");
 
-Buffer uploadBuffer(const Device& device, const CommandPool& commands, const void* data,
-                    VkDeviceSize size, VkBufferUsageFlags usage) {
-    size = std::max<VkDeviceSize>(size, 4);
-    Buffer staging = createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
-    if (data != nullptr) std::memcpy(staging.mapped, data, size);
-    Buffer target = createBuffer(device, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                 MemoryUse::DeviceLocal);
-    commands.submitAndWait([&](VkCommandBuffer cmd) {
-        VkBufferCopy region{0, 0, size};
-        vkCmdCopyBuffer(cmd, staging.buffer.get(), target.buffer.get(), 1, &region);
-    });
-    return target;
-}
 
 GpuImage uploadImage(const Device& device, const CommandPool& commands, std::uint32_t width,
                   std::uint32_t height, const std::uint8_t* rgba, bool srgb, bool mipmaps) {
@@ -138,6 +125,20 @@ UniqueSampler makeSampler(const Device& device, const Texture& texture) {
 
 }  // namespace
 
+Buffer uploadBuffer(const Device& device, const CommandPool& commands, const void* data,
+                    VkDeviceSize size, VkBufferUsageFlags usage) {
+    size = std::max<VkDeviceSize>(size, 4);
+    Buffer staging = createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+    if (data != nullptr) std::memcpy(staging.mapped, data, size);
+    Buffer target = createBuffer(device, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                 MemoryUse::DeviceLocal);
+    commands.submitAndWait([&](VkCommandBuffer cmd) {
+        VkBufferCopy region{0, 0, size};
+        vkCmdCopyBuffer(cmd, staging.buffer.get(), target.buffer.get(), 1, &region);
+    });
+    return target;
+}
+
 FragmentConstants materialConstants(const Material& material, bool baseTexture, bool mrTexture) {
     FragmentConstants constants;
     constants.hasBaseColorTexture = baseTexture ? VK_TRUE : VK_FALSE;
@@ -209,6 +210,7 @@ GpuScene::GpuScene(const Device& device, const CommandPool& commands, Scene scen
                                ? static_cast<std::uint32_t>(primitive.material)
                                : defaultMaterial;
             gpu.skinned = primitive.skinned;
+            gpu.morphed = !primitive.targets.empty();
             for (std::uint32_t index : primitive.indices) {
                 if (index >= primitive.vertices.size())
                     throw InputError(cpu_.sourceName, 0, "/meshes/" + std::to_string(m),

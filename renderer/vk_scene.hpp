@@ -40,17 +40,23 @@ static_assert(sizeof(FragmentConstants) == 37 * 4, "one 4-byte word per constant
 constexpr std::uint32_t kFragmentConstantCount = 37;
 
 // The lighting part of FragmentConstants (ids 24..36), as the Renderer sets it (defined in
-// renderer.cpp; also used by the raw-lit baseline of `signstim bench render`).
+// vk_mesh_pipeline.cpp; also used by the raw-lit baseline of `signstim bench render`).
 void setLighting(const Lighting& lighting, FragmentConstants& constants);
 
 // The material part of FragmentConstants (ids 0..23).
 FragmentConstants materialConstants(const Material& material, bool baseTexture, bool mrTexture);
+
+// A device-local buffer holding `size` bytes of `data` (zeros when null; at least 4 bytes),
+// copied through a staging buffer; waits for the copy.
+Buffer uploadBuffer(const Device& device, const CommandPool& commands, const void* data,
+                    VkDeviceSize size, VkBufferUsageFlags usage);
 
 struct GpuPrimitive {
     std::uint32_t firstIndex = 0, indexCount = 0;
     std::int32_t vertexOffset = 0;
     std::uint32_t material = 0;  // index into GpuScene::materials (last = default)
     bool skinned = false;
+    bool morphed = false;  // has morph targets (drawn with mesh_morph.vert when weights are non-zero)
 };
 
 struct GpuMaterial {
@@ -64,7 +70,7 @@ struct GpuMaterial {
 // The Renderer's mesh pipeline (shaders/mesh.vert + mesh.frag, the five vertex attributes of
 // render::Vertex) and one material's pipeline from it: `constants` = the material's
 // FragmentConstants with the lighting set (setLighting), cull mode and blending from the
-// material. Defined in renderer.cpp; the raw-lit baseline of `signstim bench render` builds
+// material. Defined in vk_mesh_pipeline.cpp; the raw-lit baseline of `signstim bench render` builds
 // its pipeline with the same two functions so both draw the same image.
 PipelineDesc meshPipelineDesc(VkShaderModule vertex, VkShaderModule fragment, VkFormat colorFormat,
                               VkFormat depthFormat, std::uint32_t msaa);

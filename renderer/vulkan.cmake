@@ -13,4 +13,6 @@ target_sources(signstim_renderer PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/label_overlay.cpp
   ${CMAKE_CURRENT_LIST_DIR}/procedural.cpp
   ${CMAKE_CURRENT_LIST_DIR}/renderer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/vk_mesh_pipeline.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/vk_morph.cpp
   ${CMAKE_CURRENT_LIST_DIR}/vk_raw_baseline.cpp)

@@ -4,6 +4,7 @@
 #include "renderer/image_io.hpp"
 #include "tests/app/run_command.hpp"
 #include "tests/renderer/gltf_test_files.hpp"
+#include "tests/renderer/morph_test_files.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/quaternion.hpp>
@@ -134,6 +135,30 @@ TEST(RenderGltfCli, DirectoryOutputSamplesTheAnimation) {
     EXPECT_FALSE(fs::exists(out / "frame_00004.png"));
     // The arm bends between the first and the last frame.
     EXPECT_GT(differingPixels(readImage(out / "frame_00001.png"), readImage(out / "frame_00003.png")), 50u);
+}
+
+TEST(RenderGltfCli, MorphWeightsAnimationChangesTheShapeOverTheFrames) {
+    const fs::path dir = testDir();
+    signstim::render::testing::MorphBox box = signstim::render::testing::morphBox();
+    const fs::path model = box.gltf.write(dir, "morph-box.gltf", signstim::render::testing::Container::Embedded);
+    const fs::path out = dir / "frames";
+    const Result r = runSignstim("render-gltf " + q(model) + " --out " + q(out) +
+                                 " --size 96x96 --frames 3 --msaa 1 --animation morph");
+    ASSERT_EQ(r.status, 0) << r.output;
+    // The weights go 0 -> 1: the box stretches and pinches between the first and last frame.
+    EXPECT_GT(differingPixels(readImage(out / "frame_00001.png"), readImage(out / "frame_00003.png")), 50u);
+}
+
+TEST(RenderGltfCliRefuses, MorphTargetCountNotMatchingItsWeights) {
+    const fs::path dir = testDir();
+    signstim::render::testing::MorphBox box = signstim::render::testing::morphBox();
+    box.gltf.doc["meshes"][0]["weights"] = {0.5, 0.5, 0.5};
+    const fs::path model = box.gltf.write(dir, "morph-box.gltf", signstim::render::testing::Container::Embedded);
+    const Result r = runSignstim("render-gltf " + q(model) + " --out " + q(dir / "out.png") + " --size 32x32");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("morph-box.gltf"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("/meshes/0/weights"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
 }
 
 TEST(RenderGltfCli, Mp4OutputIsH264AtTheRequestedRate) {

@@ -59,6 +59,24 @@ SIGNSTIM_FUZZ_TARGET(gltf_load) {
                     if (index >= primitive.vertices.size()) fuzz::fail("an index past the vertices accepted");
                 for (const render::Vertex& vertex : primitive.vertices)
                     for (int k = 0; k < 3; ++k) requireFinite(vertex.position[k], "vertex position");
+                // Morph targets: one per mesh target, dense over the vertices, finite.
+                if (primitive.targets.size() != mesh.targetCount()) fuzz::fail("primitives with different target counts accepted");
+                for (const render::MorphTarget& target : primitive.targets)
+                    for (const auto* attribute : {&target.position, &target.normal}) {
+                        if (!attribute->empty() && attribute->size() != primitive.vertices.size())
+                            fuzz::fail("a morph target not covering every vertex accepted");
+                        for (const glm::vec3& d : *attribute)
+                            for (int k = 0; k < 3; ++k) requireFinite(d[k], "morph displacement");
+                    }
             }
+        // Pose every animation (weights channels included) at its middle; weights stay finite.
+        for (std::size_t a = 0; a < scene.animations.size(); ++a) {
+            render::Pose pose = render::restPose(scene);
+            render::applyAnimation(scene, static_cast<int>(a), 0.5f * scene.animations[a].durationSeconds, pose);
+            for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+                const std::vector<float> weights = render::resolveMorphWeights(scene, pose, static_cast<int>(n));
+                for (float w : weights) requireFinite(w, "morph weight");
+            }
+        }
     });
 }
