@@ -3,6 +3,7 @@
 #include "analysis/svg.hpp"
 #include "analysis/text_format.hpp"
 #include "common/number_format.hpp"
+#include "stimuli/study/study_exports.hpp"  // escapeHtml
 
 #include <cmath>
 
@@ -12,7 +13,7 @@ namespace {
 
 using nlohmann::json;
 
-std::string h(const std::string& text) { return escapeXml(text); }
+std::string h(const std::string& text) { return stimuli::escapeHtml(text); }
 std::string orDash(const std::string& text) { return text.empty() ? "&ndash;" : h(text); }
 std::string fixed(double value, int decimals) { return orDash(fixedOrEmpty(value, decimals)); }
 std::string pValue(double p) { return orDash(formatPValue(p)); }

@@ -304,7 +304,7 @@ TEST(StandardOutput, DevFullIsAnError) {
     // reported as "Input/output error" (issue 25 §10); common/standard_output keeps the reason.
     const std::string story = "story " + shellQuote(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/stories/story-01.json") +
                               " --version point --json";
-    for (const std::string command : {std::string("hand pose --shape A --json"),
+    for (const std::string& command : {std::string("hand pose --shape A --json"),
                                       std::string("verb ASK --subject 0.9 --object -0.6 --version point --json"), story}) {
         // The braces: stdout goes to /dev/full, stderr to the capture.
         const CommandResult r = runShell("{ " + signstimCommand() + " " + command + " > /dev/full; }");
