@@ -120,7 +120,10 @@ public:
                 place(rest, SpanKind::Rest, "rest", static_cast<int>(s), -1, std::nullopt);
             } else if (boundaryHold_ > 0.0) {
                 // SPEC §6.3: the last sign held at the boundary; the next sentence goes on from it.
-                hold(boundaryHold_ / options_.rate, "boundary", static_cast<int>(s), -1);
+                // Labelled with the sign it holds: the hold is that sign prolonged (what it
+                // touches, it keeps touching).
+                const std::string held = timeline_.spans.empty() ? "HOLD" : timeline_.spans.back().label;
+                hold(boundaryHold_ / options_.rate, held, static_cast<int>(s), -1);
             }
         }
         timeline_.durationSeconds = now_;

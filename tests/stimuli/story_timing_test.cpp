@@ -111,7 +111,7 @@ TEST(StoryTiming, SentencesEndInABoundaryHoldAndTheHandsRestOnlyAtTheEnds) {
         // Each boundary: a hold of 150-400 ms with the hands still (its own span, or inside a verb's slot).
         int boundaries = 0;
         for (const TimelineSpan& span : t.spans) {
-            if (span.label != "boundary") continue;
+            if (span.kind != SpanKind::Hold || span.item != -1) continue;  // a boundary hold (not a HOLD item)
             ++boundaries;
             const double held = span.endSeconds - span.startSeconds;
             EXPECT_GE(held, 0.15 - 1e-9);
@@ -193,7 +193,7 @@ TEST(StoryTiming, HandsFlowThroughKeysOfAContinuingMovementAndStopWhereItReverse
     EXPECT_GT(through, 3);
     // A hold stops the hand: the key before a boundary hold is not crossed.
     for (const TimelineSpan& span : t.spans)
-        if (span.label == "boundary") {
+        if (span.kind == SpanKind::Hold && span.item == -1) {
             const auto a = handAt(t.right, span.startSeconds - 0.001), b = handAt(t.right, span.startSeconds);
             ASSERT_TRUE(a && b);
             EXPECT_LT(glm::distance(*a, *b) / 0.001, 5.0);
