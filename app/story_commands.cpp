@@ -169,7 +169,10 @@ void registerStoryCommands(Commands& commands) {
     story->add_option("--fps", o->fps, "Frame rate: 30, 25, 30000/1001 ...")->capture_default_str();
     story->add_option("--msaa", o->msaa, "Multisampling: 1 or 4")->capture_default_str();
     story->add_option("--device", o->device, "Vulkan device: name substring or index (see `signstim devices`)");
-    story->add_option("--rate", o->rate, "Signing speed relative to citation timing (0.1 to 4)")->capture_default_str();
+    story->add_option("--rate", o->rate,
+                      "Signing speed relative to the timing model (0.1 to 4; 1: ~1.7 signs/s, docs/stories.md); "
+                      "the wrist speed limit holds at any rate")
+        ->capture_default_str();
     story->add_option("--timing", o->timing,
                       "Timing preset instead of the story's `timing`: natural (SPEC 6.3) or legacy (the timing "
                       "before issue 21, for comparison)")
