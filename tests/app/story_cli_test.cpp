@@ -153,7 +153,8 @@ TEST(StoryCli, RenderedFramesOutsideTheVerbSlotsAreByteIdenticalAcrossVersions) 
             same += equal;
         }
     }
-    EXPECT_GT(same, 40);
+    // (At 5 fps the example's ~10 s, ~2.5 s of them in its two verb slots, share ~40 frames.)
+    EXPECT_GT(same, 30);
     EXPECT_GT(differ, 2) << "the versions must differ inside the verb slots";
 }
 
