@@ -3,6 +3,7 @@
 // of rest, Huenerfauth's boundary and repetition rules, coarticulated keys, the speed limit,
 // the legacy preset, and the `timing` object's errors.
 #include "stimuli/story/story_world.hpp"
+#include "stimuli/study/study.hpp"
 #include "stimuli/story/timeline.hpp"
 
 #include <gtest/gtest.h>
@@ -234,6 +235,33 @@ TEST(StoryTiming, TimingObjectMistakesNameFileLineAndField) {
               formatTimelineJson(buildTimeline(legacy, VerbVersion::Point, world().sources(legacy), legacyTimelineOptions())));
     EXPECT_EQ(describeTiming(storyFromText(R"("MY")", R"({"preset": "legacy", "pauseShare": 0.1})").timing),
               "legacy, pauseShare 0.1");
+}
+
+TEST(StoryTiming, AStudyFilesRenderTimingIsReadCheckedAndNamedInItsSettings) {
+    const auto study = [](const std::string& timing) {
+        return parseStudyFile(parseJsonText(R"({
+  "format": "signstim-study", "version": 1, "title": "T", "seed": 3, "participants": 8,
+  "versions": ["point", "vector", "animator", "uninflected"],
+  "stories": ["a.json", "b.json", "c.json", "d.json", "e.json", "f.json", "g.json", "h.json"],
+  "phase2": {"story": "s.json", "sentences": [2, 1, 3, 4]},
+  "render": {"size": "640x480", "fps": 30, "msaa": 4, "rate": 1,
+             "timing": )" + timing + R"(}
+})",
+                                            "study.json"));
+    };
+    const StudyFile legacy = study(R"({"preset": "legacy"})");
+    EXPECT_TRUE(legacy.render.timing.given());
+    EXPECT_EQ(legacy.render.timing.preset, "legacy");
+    EXPECT_EQ(legacy.quick.timing.preset, "legacy");  // the quick preview tells it the same way
+    EXPECT_NE(legacy.render.text().find("timing legacy"), std::string::npos) << legacy.render.text();
+    try {
+        study(R"({"repetitionShortening": 0.2})");
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("study.json:7"), std::string::npos) << what;
+        EXPECT_NE(what.find("/render/timing/repetitionShortening"), std::string::npos) << what;
+    }
 }
 
 }  // namespace
