@@ -522,13 +522,6 @@ private:
     bool verbSlotOpen_ = false;
 };
 
-// Rounded to 1/scale (scale a power of ten): the division by an exact integer gives the
-// double nearest the decimal, so the JSON reads 2.106, not 2.1060000000000003.
-double roundTo(double v, double scale) {
-    const double r = std::round(v * scale) / scale;
-    return r == 0.0 ? 0.0 : r;
-}
-
 }  // namespace
 
 std::string toString(SpanKind kind) {
@@ -561,49 +554,6 @@ Timeline buildTimeline(const Story& story, VerbVersion version, const TimelineSo
     return Builder(story, version, sources, options,
                    std::clamp(h, options.boundaryHoldMinimumSeconds, options.boundaryHoldMaximumSeconds))
         .build();
-}
-
-std::string formatTimelineJson(const Timeline& timeline) {
-    using Json = nlohmann::ordered_json;
-    auto vec = [](const glm::dvec3& v) { return Json::array({roundTo(v.x, 100.0), roundTo(v.y, 100.0), roundTo(v.z, 100.0)}); };
-    auto hand = [&](const std::vector<TimelineKey>& keys) {
-        Json out = Json::array();
-        for (const TimelineKey& k : keys) {
-            Json j;
-            j["time"] = roundTo(k.timeSeconds, 1e4);
-            if (k.rest) {
-                j["rest"] = true;
-            } else {
-                j["position"] = vec(k.pose.positionMm);
-                j["fingers"] = vec(fingersDirection(k.pose.orientation));
-                j["palm"] = vec(palmDirection(k.pose.orientation));
-                j["handshape"] = k.handshape;
-            }
-            out.push_back(j);
-        }
-        return out;
-    };
-    Json root;
-    root["story"] = timeline.story;
-    root["version"] = timeline.version;
-    root["duration"] = roundTo(timeline.durationSeconds, 1e4);
-    Json spans = Json::array();
-    for (const TimelineSpan& s : timeline.spans)
-        spans.push_back({{"kind", toString(s.kind)}, {"label", s.label}, {"sentence", s.sentence + 1}, {"item", s.item + 1},
-                         {"start", roundTo(s.startSeconds, 1e4)}, {"end", roundTo(s.endSeconds, 1e4)}});
-    root["spans"] = spans;
-    root["right"] = hand(timeline.right);
-    root["left"] = hand(timeline.left);
-    Json gaze = Json::array();
-    for (const GazeKey& g : timeline.gaze) {
-        Json j;
-        j["time"] = roundTo(g.timeSeconds, 1e4);
-        if (g.targetMm) j["target"] = vec(*g.targetMm);
-        else j["target"] = "viewer";
-        gaze.push_back(j);
-    }
-    root["gaze"] = gaze;
-    return root.dump(2) + "\n";
 }
 
 }  // namespace signstim::stimuli
