@@ -3,6 +3,7 @@
 #include "app/cli_values.hpp"
 #include "app/clip_output.hpp"
 #include "app/commands.hpp"
+#include "app/story_timing.hpp"
 #include "stimuli/story/story_world.hpp"
 #include "common/error.hpp"
 #include "common/standard_output.hpp"
@@ -38,6 +39,8 @@ struct StoryOptions {
     std::uint32_t msaa = 4;
     std::string device;
     double rate = 1.0;
+    std::string timing;  // --timing: a preset replacing the story's `timing`
+    bool strict = false;
     std::string scenesDir;
     std::string lexiconFile;
     bool quiet = false;
@@ -96,10 +99,40 @@ void reportClearance(const StoryWorld& world, const Story& story, const Timeline
     for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
 }
 
+// `--check`: the pace and peak speeds of each version (app/story_timing.hpp); true when a
+// limit is broken.
+bool reportPace(const StoryWorld& world, const Story& story, const TimelineOptions& timing, const std::string& preset) {
+    const Signer signer(world.scenes);
+    std::printf("timing (%s): the telling (first to last sign), its pace, and the posed signer's peak speeds:\n",
+                preset.c_str());
+    std::vector<std::string> warnings;
+    for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
+        const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(story, v, world.sources(story), timing));
+        const StoryPace pace = measurePace(signer.rig(), clip);
+        const TimelineMeasures& m = pace.measures;
+        std::printf("  %s: %.2f s (telling %.2f s): %.2f signs/s (%d signs)", toString(v).c_str(), m.durationSeconds,
+                    m.tellingSeconds, m.signsPerSecond(), m.signs);
+        if (m.letters > 0) std::printf(", %.2f letters/s (%d letters)", m.lettersPerSecond(), m.letters);
+        std::printf(", pauses %.1f %%; peak wrist %.2f m/s (%.2f s), peak head %.0f deg/s (%.2f s)\n", 100.0 * m.pauseShare(),
+                    pace.peakWristMmPerSecond / 1000.0, pace.peakWristSeconds, pace.peakHeadDegreesPerSecond,
+                    pace.peakHeadSeconds);
+        for (const std::string& w : paceWarnings(pace)) warnings.push_back(toString(v) + ": " + w);
+    }
+    for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
+    return !warnings.empty();
+}
+
+// The timing a story is told with: its `timing` object, or --timing's preset instead.
+TimelineOptions storyTiming(const StoryOptions& o, const Story& story, std::string* described = nullptr) {
+    StoryTiming timing = story.timing;
+    if (!o.timing.empty()) timing = StoryTiming{o.timing, {}, 0};
+    if (described) *described = describeTiming(timing);
+    return timelineOptionsFor(timing, o.rate);
+}
+
 void renderStory(const StoryOptions& o, const StoryWorld& world, const Story& story, VerbVersion version) {
     const ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
-    TimelineOptions timing;
-    timing.rate = o.rate;
+    const TimelineOptions timing = storyTiming(o, story);
     const Signer signer(world.scenes);
     const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(story, version, world.sources(story), timing));
     // The still: the middle of the first verb (where the versions differ), else the middle.
@@ -133,7 +166,9 @@ void registerStoryCommands(Commands& commands) {
     auto* check = story->add_flag("--check", o->check,
                                   "Only check: the story, its signs, letters and verbs, in all four versions (exit 2 "
                                   "naming file:line:column); then report how close the hands come to each other and "
-                                  "to the body (warnings where they interpenetrate)");
+                                  "to the body (warnings where they interpenetrate), and each version's duration, "
+                                  "signs/s, letters/s, pause share and peak wrist and head speeds (warnings beyond "
+                                  "SPEC 6.2-6.3)");
     auto* json = story->add_flag("--json", o->json, "Print the timeline of --version as JSON")->excludes(check);
     story->add_option("--out", o->outPath, "FILE.mp4, FILE.png (a still of the first verb) or a folder of frames")
         ->excludes(check)
@@ -142,7 +177,17 @@ void registerStoryCommands(Commands& commands) {
     story->add_option("--fps", o->fps, "Frame rate: 30, 25, 30000/1001 ...")->capture_default_str();
     story->add_option("--msaa", o->msaa, "Multisampling: 1 or 4")->capture_default_str();
     story->add_option("--device", o->device, "Vulkan device: name substring or index (see `signstim devices`)");
-    story->add_option("--rate", o->rate, "Signing speed relative to citation timing (0.1 to 4)")->capture_default_str();
+    story->add_option("--rate", o->rate,
+                      "Signing speed relative to the timing model (0.1 to 4; 1: ~1.7 signs/s, docs/stories.md); "
+                      "the wrist speed limit holds at any rate")
+        ->capture_default_str();
+    story->add_option("--timing", o->timing,
+                      "Timing preset instead of the story's `timing`: natural (SPEC 6.3) or legacy (the timing "
+                      "before issue 21, for comparison)")
+        ->check(CLI::IsMember({"natural", "legacy"}));
+    story->add_flag("--strict", o->strict,
+                    "With --check: exit 2 when a timing limit is broken (pace, letters/s, peak wrist or head speed)")
+        ->needs(check);
     story->add_option("--scenes", o->scenesDir,
                       "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ installed beside signstim)");
     story->add_option("--lexicon", o->lexiconFile,
@@ -157,8 +202,8 @@ void registerStoryCommands(Commands& commands) {
         if (!o->check) version = requireVersion(*o);
         const StoryWorld world(o->scenesDir, o->lexiconFile);
         const Story story = world.loadStory(o->file);
-        TimelineOptions timing;
-        timing.rate = o->rate;
+        std::string preset;
+        const TimelineOptions timing = storyTiming(*o, story, &preset);
         if (o->check) {
             double seconds = 0.0;
             int verbs = 0;
@@ -189,6 +234,10 @@ void registerStoryCommands(Commands& commands) {
             for (const std::string& note : world.fingerspellingNotes(story)) std::printf("note: %s\n", note.c_str());
             std::fflush(stdout);
             reportClearance(world, story, timing);
+            const bool broken = reportPace(world, story, timing, preset);
+            std::fflush(stdout);
+            if (broken && o->strict)
+                throw InputError(o->file, 0, "timing", "a timing limit is broken (the warnings above; --strict)");
             return;
         }
         if (o->json) {

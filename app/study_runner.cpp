@@ -159,8 +159,9 @@ Story unitStory(const LoadedStudy& s, const StudyUnit& unit) {
 std::vector<Timeline> unitTimelines(const LoadedStudy& s, const Story& story) {
     TimelineSources sources = s.world->sources(story);
     sources.slotVersions = studyVersions(s);
-    TimelineOptions timing;
-    timing.rate = s.settings.rate;
+    // The study's `timing` replaces the story's own (stimuli/story/timing.hpp).
+    const TimelineOptions timing =
+        timelineOptionsFor(s.settings.timing.given() ? s.settings.timing : story.timing, s.settings.rate);
     std::vector<Timeline> timelines;
     for (VerbVersion v : studyVersions(s)) timelines.push_back(buildTimeline(story, v, sources, timing));
     return timelines;

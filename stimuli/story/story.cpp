@@ -106,7 +106,7 @@ public:
     Story read() {
         const json& root = source_.root;
         if (!root.is_object()) fail(1, "", "a story file is a JSON object {\"format\": \"signstim-story\", ...}");
-        checkKnownKeys(root, {"format", "version", "title", "characters", "sentences", "questions", "notes"}, "");
+        checkKnownKeys(root, {"format", "version", "title", "characters", "sentences", "questions", "notes", "timing"}, "");
         const std::string format = requiredString(root, "format", "");
         if (format != "signstim-story")
             fail(lineOfKey("", "format"), "/format", "expected \"signstim-story\", got \"" + format + "\"");
@@ -118,6 +118,7 @@ public:
         story_.file = source_.file;
         story_.title = requiredString(root, "title", "");
         if (root.contains("notes")) story_.notes = requiredString(root, "notes", "");
+        if (root.contains("timing")) story_.timing = parseStoryTiming(source_, root["timing"], "/timing");
         readCharacters(required(root, "characters", ""));
         readSentences(required(root, "sentences", ""));
         // A story for phase 1 has questions (the study requires them); the sentences of phase 2

@@ -10,6 +10,7 @@
 // verb, the object the first one named or pointed to after it; ASK(JOHN,MARY) or TELL(MARY)
 // says so explicitly where the rule cannot read the sentence.
 #include "stimuli/json_source.hpp"
+#include "stimuli/story/timing.hpp"
 #include "stimuli/verbs/verbs.hpp"
 
 #include <filesystem>
@@ -70,6 +71,7 @@ struct Story {
     std::vector<StorySentence> sentences;
     std::vector<StoryQuestion> questions;
     std::string notes;
+    StoryTiming timing;  // the `timing` object (natural when not given)
 
     int characterIndex(std::string_view gloss) const;  // -1 when none
 };

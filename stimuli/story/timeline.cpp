@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
 
 namespace signstim::stimuli {
 namespace {
@@ -20,6 +21,9 @@ constexpr double kDoubledLetterSlideMm = 35.0;
 constexpr double kGazeLeadSeconds = 0.12;
 
 constexpr int kRight = 0, kLeft = 1;
+// The peak speed of a minimum-jerk stretch over its mean speed (max of 30u²(1−u)²); no
+// coarticulated stretch peaks higher (hermiteEase's slopes are bounded by it).
+constexpr double kPeakToMean = 1.875;
 
 // A stretch of keys, times relative to its start (the first key of a used hand at 0).
 struct Segment {
@@ -41,6 +45,16 @@ TimelineKey key(double t, const HandPose& pose, const std::string& shape) {
     k.pose = pose;
     k.handshape = shape;
     return k;
+}
+
+// How far the wrist travels between two hand poses, at most: the hand's reference point's
+// displacement plus the arc the wrist swings as the hand turns about it [D: the wrist sits
+// ~40 mm from the palm's reference point]. Used for the speed limit (SPEC §6.2 bounds the
+// wrist, not the palm).
+double wristTravelMm(const HandPose& a, const HandPose& b) {
+    constexpr double kWristLeverMm = 40.0;
+    const double cosHalf = std::min(1.0, std::abs(glm::dot(a.orientation, b.orientation)));
+    return glm::length(b.positionMm - a.positionMm) + kWristLeverMm * 2.0 * std::acos(cosHalf);
 }
 
 HandPose poseAt(const glm::dvec3& position, const glm::dquat& orientation) {
@@ -67,11 +81,14 @@ std::vector<TimelineKey> expandPasses(const std::vector<VerbKeyframe>& keys, int
 
 class Builder {
 public:
-    Builder(const Story& story, VerbVersion version, const TimelineSources& sources, const TimelineOptions& options)
-        : story_(story), version_(version), sources_(sources), options_(options) {
+    // `boundaryHoldSeconds`: the hold at each sentence boundary (at rate 1), or empty for the
+    // options' fixed one.
+    Builder(const Story& story, VerbVersion version, const TimelineSources& sources, const TimelineOptions& options,
+            double boundaryHoldSeconds)
+        : story_(story), version_(version), sources_(sources), options_(options), boundaryHold_(boundaryHoldSeconds) {
         if (!sources_.lexicon || !sources_.shapes || !sources_.verbs)
             throw std::invalid_argument("buildTimeline: lexicon, handshapes and verbs are required");
-        if (!(options_.rate > 0.1 && options_.rate <= 4.0))
+        if (!(options_.rate > 0.1 - 1e-12 && options_.rate <= 4.0))
             throw std::invalid_argument("buildTimeline: rate outside 0.1 to 4 (the command line checks --rate)");
         if (std::find(sources_.slotVersions.begin(), sources_.slotVersions.end(), version) == sources_.slotVersions.end())
             throw std::invalid_argument("buildTimeline: the version is not among the slot versions");
@@ -85,18 +102,33 @@ public:
         holdAll(options_.restSeconds, SpanKind::Rest, "rest", -1, -1);
         for (std::size_t s = 0; s < story_.sentences.size(); ++s) {
             const StorySentence& sentence = story_.sentences[s];
-            for (std::size_t i = 0; i < sentence.items.size(); ++i) addItem(sentence.items[i], static_cast<int>(s), static_cast<int>(i));
-            // Back to rest between sentences (and at the end).
+            // The last item before the boundary that is signed (a HOLD only holds it).
+            std::size_t lastSigned = sentence.items.size();
+            for (std::size_t i = 0; i < sentence.items.size(); ++i)
+                if (sentence.items[i].kind != StoryItemKind::Hold) lastSigned = i;
+            for (std::size_t i = 0; i < sentence.items.size(); ++i)
+                addItem(sentence.items[i], static_cast<int>(s), static_cast<int>(i), i == lastSigned);
             const bool last = s + 1 == story_.sentences.size();
-            Segment rest;
-            rest.durationSeconds = last ? options_.restSeconds : options_.sentencePauseSeconds;
-            rest.hands[kRight].push_back(restKey(0.0));
-            rest.hands[kRight].push_back(restKey(rest.durationSeconds));
-            rest.hands[kLeft] = rest.hands[kRight];
-            place(rest, SpanKind::Rest, "rest", static_cast<int>(s), -1, std::nullopt);
+            if (last || options_.restBetweenSentences) {
+                // Back to rest at the end (and, legacy, between sentences).
+                Segment rest;
+                rest.durationSeconds = last ? options_.restSeconds : options_.sentencePauseSeconds;
+                rest.hands[kRight].push_back(restKey(0.0));
+                rest.hands[kRight].push_back(restKey(rest.durationSeconds));
+                rest.hands[kLeft] = rest.hands[kRight];
+                if (!last) timeline_.pauseSeconds += rest.durationSeconds;
+                place(rest, SpanKind::Rest, "rest", static_cast<int>(s), -1, std::nullopt);
+            } else if (boundaryHold_ > 0.0) {
+                // SPEC §6.3: the last sign held at the boundary; the next sentence goes on from it.
+                // Labelled with the sign it holds: the hold is that sign prolonged (what it
+                // touches, it keeps touching).
+                const std::string held = timeline_.spans.empty() ? "HOLD" : timeline_.spans.back().label;
+                hold(boundaryHold_ / options_.rate, held, static_cast<int>(s), -1);
+            }
         }
         timeline_.durationSeconds = now_;
         if (version_ == VerbVersion::Animator && !missingAnimator_.empty()) throw missingAnimatorFiles();
+        markPassThrough();
         return std::move(timeline_);
     }
 
@@ -119,28 +151,77 @@ private:
         timeline_.gaze.push_back({t, target});
     }
 
-    double distanceMm(int h, const TimelineKey& next) const {
-        const glm::dvec3 from = state_[h].rest ? kNominalRestMm[h] : state_[h].pose.positionMm;
-        const glm::dvec3 to = next.rest ? kNominalRestMm[h] : next.pose.positionMm;
-        return glm::length(to - from);
+    static double distanceMm(int h, const HandState& from, const TimelineKey& next) {
+        const glm::dvec3 a = from.rest ? kNominalRestMm[h] : from.pose.positionMm;
+        const glm::dvec3 b = next.rest ? kNominalRestMm[h] : next.pose.positionMm;
+        if (from.rest || next.rest) return glm::length(b - a);
+        return wristTravelMm(from.pose, next.pose);
     }
 
-    double transitionFor(const Segment& segment) const {
+    // The largest displacement of a hand from `from` (each of the states) to the segment's start.
+    static double displacementMm(const std::vector<std::array<HandState, 2>>& from, const Segment& segment) {
         double distance = 0.0;
-        for (int h : {kRight, kLeft}) {
-            const TimelineKey first = segment.hands[h].empty() ? restKey(0.0) : segment.hands[h].front();
-            distance = std::max(distance, distanceMm(h, first));
-        }
-        return std::clamp(options_.transitionBaseSeconds + distance / options_.transitionMmPerSecond,
-                          options_.transitionMinimumSeconds, options_.transitionMaximumSeconds);
+        for (const auto& state : from)
+            for (int h : {kRight, kLeft}) {
+                const TimelineKey first = segment.hands[h].empty() ? restKey(0.0) : segment.hands[h].front();
+                distance = std::max(distance, distanceMm(h, state[h], first));
+            }
+        return distance;
     }
 
-    // Appends `segment` after a transition (distance-based, or the fixed verb transition when
-    // the slot of a verb is open), records its span and the gaze during it.
+    // How long a transition over `distance` takes toward an item touching (or not).
+    double transitionSeconds(double distance, const SignContact& next) const {
+        if (!options_.fittsTransitions)
+            return std::clamp(options_.transitionBaseSeconds + distance / options_.transitionMmPerSecond,
+                              options_.transitionMinimumSeconds, options_.transitionMaximumSeconds);
+        // MacKenzie 1992 (Fitts 1954): T = a + b·log2(1 + D/W); W smaller for a touching target.
+        const double width = next.hands || next.body ? options_.fittsContactWidthMm : options_.fittsWidthMm;
+        const double fitts = (options_.fittsInterceptSeconds + options_.fittsSecondsPerBit * std::log2(1.0 + distance / width)) /
+                             options_.rate;
+        double t = std::clamp(fitts, options_.transitionMinimumSeconds / options_.rate,
+                              options_.transitionMaximumSeconds / options_.rate);
+        // SPEC §6.2: never faster than human, whatever the rate (1.875: minimum jerk's peak/mean).
+        if (options_.peakSpeedMmPerSecond > 0.0) t = std::max(t, kPeakToMean * distance / options_.peakSpeedMmPerSecond);
+        return t;
+    }
+
+    // Stretches a segment's keys in time so that no keyed stretch peaks above the speed limit.
+    void limitSpeed(Segment& segment) const {
+        if (options_.peakSpeedMmPerSecond <= 0.0) return;
+        double stretch = 1.0;
+        for (const auto& keys : segment.hands)
+            for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
+                const double dt = keys[k + 1].timeSeconds - keys[k].timeSeconds;
+                if (keys[k].rest || keys[k + 1].rest) continue;
+                const double distance = wristTravelMm(keys[k].pose, keys[k + 1].pose);
+                if (distance <= 0.0) continue;
+                const double needed = kPeakToMean * distance / options_.peakSpeedMmPerSecond;
+                stretch = std::max(stretch, dt > 0.0 ? needed / dt : 1e9);
+            }
+        if (stretch <= 1.0 || stretch >= 1e9) return;
+        for (auto& keys : segment.hands)
+            for (TimelineKey& k : keys) k.timeSeconds *= stretch;
+        segment.durationSeconds *= stretch;
+    }
+
+    // Appends `segment` after a transition, records its span and the gaze during it.
+    // `verbTransition`: for a verb, the transition into its slot (the same in every version).
     void place(const Segment& segment, SpanKind kind, const std::string& label, int sentence, int item,
-               std::optional<glm::dvec3> gazeTarget, bool isVerb = false) {
-        const bool fixedTransition = isVerb || verbSlotOpen_;
-        const double transition = fixedTransition ? options_.verbTransitionSeconds : transitionFor(segment);
+               std::optional<glm::dvec3> gazeTarget, std::optional<double> verbTransition = std::nullopt,
+               int letters = 0) {
+        const bool isVerb = verbTransition.has_value();
+        double transition = 0.0;
+        if (isVerb) {
+            transition = *verbTransition;
+        } else if (verbSlotOpen_) {
+            // Out of a verb slot: from the farthest of the versions' end poses, so that the
+            // slot ends at the same time in every version.
+            transition = options_.verbTransitionSeconds > 0.0
+                             ? options_.verbTransitionSeconds
+                             : transitionSeconds(displacementMm(slotEnds_, segment), segment.contact);
+        } else {
+            transition = transitionSeconds(displacementMm({state_}, segment), segment.contact);
+        }
         const double start = now_ + transition;
         for (int h : {kRight, kLeft}) {
             if (segment.hands[h].empty()) {
@@ -158,17 +239,20 @@ private:
             state_[h].pose = last.pose;
         }
         const double end = start + segment.durationSeconds;
-        const bool continuesSlot = verbSlotOpen_ && (kind == SpanKind::Hold || kind == SpanKind::Rest) && !isVerb;
+        const bool continuesSlot = verbSlotOpen_ && kind == SpanKind::Rest && !isVerb;
+        TimelineSpan span{kind, now_, end, label, sentence, item, start, end, segment.contact, letters};
         if (isVerb) {
-            timeline_.spans.push_back({SpanKind::Verb, now_, end, label, sentence, item, start, end, segment.contact});
+            span.kind = SpanKind::Verb;
+            timeline_.spans.push_back(span);
         } else if (verbSlotOpen_) {
-            // The slot runs to this item's first key (the fixed transition out is inside it);
-            // a HOLD or the return to rest that follows a verb stays inside it (the hands hold
-            // or leave the verb's end pose).
+            // The slot runs to this item's first key (the transition out is inside it); the
+            // return to rest that follows a verb stays inside it (the hands leave the verb's
+            // end pose).
             timeline_.spans.back().endSeconds = continuesSlot ? end : start;
-            if (!continuesSlot) timeline_.spans.push_back({kind, start, end, label, sentence, item, start, end, segment.contact});
+            span.startSeconds = start;
+            if (!continuesSlot) timeline_.spans.push_back(span);
         } else {
-            timeline_.spans.push_back({kind, now_, end, label, sentence, item, start, end, segment.contact});
+            timeline_.spans.push_back(span);
         }
         if (continuesSlot) {
             gaze(end, timeline_.gaze.back().targetMm);  // still on the verb's object
@@ -188,84 +272,102 @@ private:
             k.timeSeconds = now_ + seconds;
             track(h).push_back(k);
         }
-        timeline_.spans.push_back({kind, now_, now_ + seconds, label, sentence, item, now_, now_ + seconds, {}});
+        timeline_.spans.push_back({kind, now_, now_ + seconds, label, sentence, item, now_, now_ + seconds, {}, 0});
         gaze(now_ + seconds, timeline_.gaze.empty() ? std::nullopt : timeline_.gaze.back().targetMm);
         now_ += seconds;
     }
 
-    void addItem(const StoryItem& item, int sentence, int index) {
+    // The hands keep where they are for `seconds` (a HOLD, or a boundary hold): no transition.
+    void hold(double seconds, const std::string& label, int sentence, int index) {
+        timeline_.pauseSeconds += seconds;
+        for (int h : {kRight, kLeft}) {
+            TimelineKey k = track(h).back();
+            if (k.rest) {
+                track(h).push_back(restKey(now_ + seconds));
+                continue;
+            }
+            k.timeSeconds = now_;
+            k.passThrough = false;
+            if (track(h).back().timeSeconds < now_) track(h).push_back(k);
+            k.timeSeconds = now_ + seconds;
+            track(h).push_back(k);
+        }
+        if (verbSlotOpen_) {
+            // The hands hold the verb's end pose: part of the verb's own keys.
+            timeline_.spans.back().endSeconds = now_ + seconds;
+            timeline_.spans.back().keysEndSeconds = now_ + seconds;
+        } else {
+            // The hands hold the previous item's last pose, and whatever it touches.
+            const SignContact held = timeline_.spans.empty() ? SignContact{} : timeline_.spans.back().contact;
+            timeline_.spans.push_back({SpanKind::Hold, now_, now_ + seconds, label, sentence, index, now_, now_ + seconds, held, 0});
+        }
+        gaze(now_ + seconds, timeline_.gaze.back().targetMm);
+        now_ += seconds;
+    }
+
+    // [R: Huenerfauth 2008-09] How much longer (before a boundary) or shorter (said before) an
+    // item is: its keys' times are multiplied by this.
+    double itemScale(const std::string& said, bool beforeBoundary) {
+        double scale = beforeBoundary ? options_.boundaryLengthening : 1.0;
+        if (!said.empty() && !said_.insert(said).second) scale *= options_.repetitionShortening;
+        return scale;
+    }
+
+    void addItem(const StoryItem& item, int sentence, int index, bool beforeBoundary) {
         switch (item.kind) {
-            case StoryItemKind::Sign: return place(signSegment(item.gloss, item), SpanKind::Sign, item.gloss, sentence, index, std::nullopt);
+            case StoryItemKind::Sign: {
+                const double scale = itemScale(item.gloss, beforeBoundary);
+                return place(signSegment(item.gloss, item, scale), SpanKind::Sign, item.gloss, sentence, index, std::nullopt);
+            }
             case StoryItemKind::Name: {
                 const StoryCharacter& c = story_.characters[static_cast<std::size_t>(item.character)];
+                const double scale = itemScale(c.nameSign.empty() ? "" : "name:" + c.gloss, beforeBoundary);
                 if (!c.nameSign.empty())
-                    return place(signSegment(c.nameSign, item), SpanKind::Name, c.gloss, sentence, index, std::nullopt);
-                return place(fingerspellingSegment(item.letters, item), SpanKind::Name, c.gloss, sentence, index, std::nullopt);
+                    return place(signSegment(c.nameSign, item, scale), SpanKind::Name, c.gloss, sentence, index, std::nullopt);
+                return place(fingerspellingSegment(item.letters, item, scale), SpanKind::Name, c.gloss, sentence, index,
+                             std::nullopt, std::nullopt, static_cast<int>(item.letters.size()));
             }
-            case StoryItemKind::Fingerspelling:
-                return place(fingerspellingSegment(item.letters, item), SpanKind::Fingerspelling, "fs-" + item.letters,
-                             sentence, index, std::nullopt);
-            case StoryItemKind::Pointing:
-                return place(pointingSegment(item.position), SpanKind::Pointing, "IX", sentence, index, arcPoint(item.position));
-            case StoryItemKind::Hold: {
-                const double seconds = item.holdSeconds.value_or(options_.holdSeconds);
-                Segment hold;
-                hold.durationSeconds = seconds;
-                for (int h : {kRight, kLeft}) {
-                    TimelineKey k = track(h).back();
-                    k.timeSeconds = 0.0;
-                    hold.hands[h] = {k, k};
-                    hold.hands[h][1].timeSeconds = seconds;
-                    if (k.rest) hold.hands[h].clear();
-                }
-                // A hold keeps the hands where they are: no transition.
-                const bool slot = verbSlotOpen_;
-                for (int h : {kRight, kLeft})
-                    for (TimelineKey k : hold.hands[h]) {
-                        k.timeSeconds += now_;
-                        track(h).push_back(k);
-                    }
-                for (int h : {kRight, kLeft})
-                    if (hold.hands[h].empty()) track(h).push_back(restKey(now_ + seconds));
-                if (slot) {
-                    // The hands hold the verb's end pose: part of the verb's own keys.
-                    timeline_.spans.back().endSeconds = now_ + seconds;
-                    timeline_.spans.back().keysEndSeconds = now_ + seconds;
-                } else {
-                    // The hands hold the previous item's last pose, and whatever it touches.
-                    const SignContact held = timeline_.spans.empty() ? SignContact{} : timeline_.spans.back().contact;
-                    timeline_.spans.push_back({SpanKind::Hold, now_, now_ + seconds, "HOLD", sentence, index, now_,
-                                               now_ + seconds, held});
-                }
-                gaze(now_ + seconds, timeline_.gaze.back().targetMm);
-                now_ += seconds;
-                return;
+            case StoryItemKind::Fingerspelling: {
+                // Letters keep their pace when the word comes again (Reed et al.'s handshape rate
+                // bounds them): only the boundary lengthens them.
+                const double scale = itemScale("", beforeBoundary);
+                return place(fingerspellingSegment(item.letters, item, scale), SpanKind::Fingerspelling, "fs-" + item.letters,
+                             sentence, index, std::nullopt, std::nullopt, static_cast<int>(item.letters.size()));
             }
-            case StoryItemKind::Verb: return addVerb(item, sentence, index);
+            case StoryItemKind::Pointing: {
+                // IX is not a repeated word: each points anew.
+                const double scale = itemScale("", beforeBoundary);
+                return place(pointingSegment(item.position, scale), SpanKind::Pointing, "IX", sentence, index,
+                             arcPoint(item.position));
+            }
+            case StoryItemKind::Hold: return hold(item.holdSeconds.value_or(options_.holdSeconds), "HOLD", sentence, index);
+            case StoryItemKind::Verb: return addVerb(item, sentence, index, beforeBoundary);
         }
     }
 
-    Segment signSegment(const std::string& gloss, const StoryItem& item) const {
+    Segment signSegment(const std::string& gloss, const StoryItem& item, double scale) const {
         const LexiconSign* sign = sources_.lexicon->find(gloss);
         if (!sign)
             throw InputError(story_.file, item.line, item.column, "",
                              "the lexicon (" + sources_.lexicon->file + ") has no sign " + gloss);
         Segment segment;
         segment.contact = sign->contact;
+        const double rate = options_.rate / (options_.signScale * scale);
         for (std::size_t h = 0; h < sign->hands.size(); ++h) {
             const int slot = sign->hands[h] == HandSide::Right ? kRight : kLeft;
-            segment.hands[slot] = expandPasses(sign->keyframes[h], sign->passes, options_.rate);
+            segment.hands[slot] = expandPasses(sign->keyframes[h], sign->passes, rate);
             segment.durationSeconds = std::max(segment.durationSeconds, segment.hands[slot].back().timeSeconds);
         }
+        limitSpeed(segment);
         return segment;
     }
 
-    Segment pointingSegment(double position) const {
+    Segment pointingSegment(double position, double scale) const {
         const glm::dvec3 target = arcPoint(position);
-        glm::dvec3 direction = glm::normalize(target - kRightShoulderMm);
-        glm::dvec3 hand = kRightShoulderMm + options_.pointingReachMm * direction;
-        // Toward a referent on the left the reach from the right shoulder crosses the chest:
-        // the hand stays in front of it there and points from where it is.
+        glm::dvec3 direction = glm::normalize(target - options_.pointingOriginMm);
+        glm::dvec3 hand = options_.pointingOriginMm + options_.pointingReachMm * direction;
+        // Toward a referent on the left the reach crosses the chest: the hand stays in front
+        // of it there and points from where it is.
         if (hand.x < kRightShoulderMm.x && hand.z < options_.pointingMinimumForwardMm) {
             hand.z = options_.pointingMinimumForwardMm;
             direction = glm::normalize(target - hand);
@@ -274,15 +376,15 @@ private:
         const glm::dquat orientation = orientationOf(direction, glm::dvec3(0.0, -1.0, 0.0));
         const HandPose pose = poseAt(hand, orientation);
         Segment segment;
-        segment.durationSeconds = options_.pointingSeconds / options_.rate;
+        segment.durationSeconds = options_.pointingSeconds * scale / options_.rate;
         segment.hands[kRight] = {key(0.0, pose, "1"), key(segment.durationSeconds, pose, "1")};
         return segment;
     }
 
-    Segment fingerspellingSegment(const std::string& letters, const StoryItem& item) const {
+    Segment fingerspellingSegment(const std::string& letters, const StoryItem& item, double scale) const {
         Segment segment;
-        const double hold = options_.letterSeconds / options_.rate;
-        const double between = options_.letterTransitionSeconds / options_.rate;
+        const double hold = options_.letterSeconds * scale / options_.rate;
+        const double between = options_.letterTransitionSeconds * scale / options_.rate;
         const glm::dquat upright = orientationOf({0.0, 1.0, 0.0}, {0.0, 0.0, 1.0});      // palm to the viewer
         const glm::dquat sideways = orientationOf({-1.0, 0.0, 0.0}, {0.0, 0.0, -1.0});   // G, H: index across
         const glm::dquat downward = orientationOf({0.0, -0.8, 0.6}, {-0.6, -0.3, -0.4}); // P, Q: pointing down
@@ -297,6 +399,8 @@ private:
                                            : (letter == 'P' || letter == 'Q') ? downward
                                                                               : upright;
             if (i > 0) t += between;
+            // J and Z: their strokes take time in proportion to a letter's hold, so they
+            // quicken with the rest of the word.
             if (letter == 'J') {
                 // J: the I hand draws a hook down and toward the signer's left, turning the palm in.
                 requireShape("I", item);
@@ -309,8 +413,12 @@ private:
                 requireShape("1", item);
                 const double w = 30.0;
                 const glm::dvec3 corners[] = {{-w, w, 0}, {w, w, 0}, {-w, -w, 0}, {w, -w, 0}};
-                for (int c = 0; c < 4; ++c) keys.push_back(key(t + c * hold * 0.5, poseAt(at + corners[c], upright), "1"));
-                t += 3 * hold * 0.5;
+                // SPEC §6.2: the diagonal stroke no faster than the wrist may move.
+                double stroke = hold * 0.5;
+                if (options_.peakSpeedMmPerSecond > 0.0)
+                    stroke = std::max(stroke, kPeakToMean * glm::length(corners[2] - corners[1]) / options_.peakSpeedMmPerSecond);
+                for (int c = 0; c < 4; ++c) keys.push_back(key(t + c * stroke, poseAt(at + corners[c], upright), "1"));
+                t += 3 * stroke;
             } else {
                 const std::string shape(1, letter);
                 requireShape(shape, item);
@@ -329,11 +437,17 @@ private:
                              "no handshape " + shape + " in " + sources_.shapes->file + " for fingerspelling");
     }
 
-    void addVerb(const StoryItem& item, int sentence, int index) {
+    void addVerb(const StoryItem& item, int sentence, int index, bool beforeBoundary) {
         const double subject = item.subject >= 0 ? story_.characters[static_cast<std::size_t>(item.subject)].position : 0.0;
         const double object = story_.characters[static_cast<std::size_t>(item.object)].position;
+        const double rate = options_.rate / itemScale("", beforeBoundary);
+        // Every version's path at its own timing, slowed where it would be faster than human;
+        // the slot is as long as the longest, the transitions in and out as long as the
+        // farthest version needs.
         double longest = 0.0;
-        VerbPerformance mine;
+        Segment mine;
+        std::vector<std::array<HandState, 2>> ends;
+        double farthestIn = 0.0;
         for (VerbVersion v : sources_.slotVersions) {
             VerbPerformance p;
             try {
@@ -345,24 +459,64 @@ private:
                 missingAnimator_.push_back(e);
                 p = sources_.verbs(item.gloss, VerbVersion::Point, subject, object, item.line, item.column);
             }
-            longest = std::max(longest, p.durationSeconds / options_.rate);
-            if (v == version_) mine = std::move(p);
+            Segment segment;
+            segment.durationSeconds = p.durationSeconds / rate;
+            segment.contact = p.contact;
+            for (const HandTrack& trackOfHand : p.hands) {
+                const int h = trackOfHand.side == HandSide::Right ? kRight : kLeft;
+                for (const PerformanceKeyframe& k : trackOfHand.keyframes)
+                    segment.hands[h].push_back(key(k.timeSeconds / rate, k.pose, k.handshape));
+            }
+            limitSpeed(segment);
+            longest = std::max(longest, segment.durationSeconds);
+            farthestIn = std::max(farthestIn, displacementMm({state_}, segment));
+            std::array<HandState, 2> end{};
+            for (int h : {kRight, kLeft})
+                if (!segment.hands[h].empty()) end[h] = HandState{false, segment.hands[h].back().pose};
+            ends.push_back(end);
+            if (v == version_) mine = std::move(segment);
         }
-        Segment segment;
-        segment.durationSeconds = longest;
-        segment.contact = mine.contact;
-        for (const HandTrack& trackOfHand : mine.hands) {
-            const int h = trackOfHand.side == HandSide::Right ? kRight : kLeft;
-            for (const PerformanceKeyframe& k : trackOfHand.keyframes)
-                segment.hands[h].push_back(key(k.timeSeconds / options_.rate, k.pose, k.handshape));
+        mine.durationSeconds = longest;
+        for (auto& keys : mine.hands) {
             // Padded with a hold to the slot's length, so every version's slot is as long.
-            if (segment.hands[h].back().timeSeconds < longest) {
-                TimelineKey pad = segment.hands[h].back();
+            if (!keys.empty() && keys.back().timeSeconds < longest) {
+                TimelineKey pad = keys.back();
                 pad.timeSeconds = longest;
-                segment.hands[h].push_back(pad);
+                keys.push_back(pad);
             }
         }
-        place(segment, SpanKind::Verb, item.gloss, sentence, index, arcPoint(object), true);
+        const double in = options_.verbTransitionSeconds > 0.0 ? options_.verbTransitionSeconds
+                                                                : transitionSeconds(farthestIn, mine.contact);
+        place(mine, SpanKind::Verb, item.gloss, sentence, index, arcPoint(object), in);
+        slotEnds_ = std::move(ends);
+    }
+
+    // Coarticulation: a key that is neither rest nor at either end of a verb slot, between
+    // neighbours in the same stretch (all outside the slots, or all inside one), is passed
+    // through (sampleTrack decides how fast from the geometry: a reversal or a hold still
+    // stops). Keys at a slot's edge stop, so that nothing outside a slot depends on the
+    // version's keys inside it.
+    void markPassThrough() {
+        if (!options_.coarticulation) return;
+        std::vector<std::pair<double, double>> slots;
+        for (const TimelineSpan& span : timeline_.spans)
+            if (span.kind == SpanKind::Verb) slots.emplace_back(span.startSeconds, span.endSeconds);
+        const auto region = [&](double t) {
+            for (std::size_t i = 0; i < slots.size(); ++i)
+                if (slots[i].first < t && t < slots[i].second) return static_cast<int>(i);
+            return -1;
+        };
+        for (int h : {kRight, kLeft}) {
+            std::vector<TimelineKey>& keys = track(h);
+            for (std::size_t k = 1; k + 1 < keys.size(); ++k) {
+                const TimelineKey &a = keys[k - 1], &b = keys[k], &c = keys[k + 1];
+                if (a.rest || b.rest || c.rest) continue;
+                if (!(a.timeSeconds < b.timeSeconds && b.timeSeconds < c.timeSeconds)) continue;
+                const int r = region(b.timeSeconds);
+                if (region(a.timeSeconds) != r || region(c.timeSeconds) != r) continue;
+                keys[k].passThrough = true;
+            }
+        }
     }
 
     MissingAnimatorFiles missingAnimatorFiles() const {
@@ -386,18 +540,14 @@ private:
     std::vector<MissingAnimatorFile> missingAnimator_;
     const TimelineSources& sources_;
     const TimelineOptions& options_;
+    double boundaryHold_ = 0.0;
     Timeline timeline_;
     std::array<HandState, 2> state_{};
+    std::vector<std::array<HandState, 2>> slotEnds_;  // each version's end of the open verb slot
+    std::set<std::string> said_;                       // signs and words signed so far
     double now_ = 0.0;
     bool verbSlotOpen_ = false;
 };
-
-// Rounded to 1/scale (scale a power of ten): the division by an exact integer gives the
-// double nearest the decimal, so the JSON reads 2.106, not 2.1060000000000003.
-double roundTo(double v, double scale) {
-    const double r = std::round(v * scale) / scale;
-    return r == 0.0 ? 0.0 : r;
-}
 
 }  // namespace
 
@@ -414,83 +564,23 @@ std::string toString(SpanKind kind) {
     return "?";
 }
 
-double minimumJerk(double u) {
-    u = std::clamp(u, 0.0, 1.0);
-    return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
-}
-
 Timeline buildTimeline(const Story& story, VerbVersion version, const TimelineSources& sources,
                        const TimelineOptions& options) {
-    return Builder(story, version, sources, options).build();
-}
-
-TimelineSample sampleTrack(const std::vector<TimelineKey>& track, double t) {
-    TimelineSample sample;
-    if (track.empty()) return sample;
-    if (t <= track.front().timeSeconds) return {&track.front(), &track.front(), 0.0};
-    if (t >= track.back().timeSeconds) return {&track.back(), &track.back(), 0.0};
-    const auto next = std::upper_bound(track.begin(), track.end(), t,
-                                       [](double time, const TimelineKey& k) { return time < k.timeSeconds; });
-    const TimelineKey& b = *next;
-    const TimelineKey& a = *(next - 1);
-    const double span = b.timeSeconds - a.timeSeconds;
-    return {&a, &b, span > 0.0 ? minimumJerk((t - a.timeSeconds) / span) : 1.0};
-}
-
-GazeSample sampleGaze(const std::vector<GazeKey>& gaze, double t) {
-    GazeSample sample;
-    if (gaze.empty()) return sample;
-    if (t <= gaze.front().timeSeconds) return {&gaze.front(), &gaze.front(), 0.0};
-    if (t >= gaze.back().timeSeconds) return {&gaze.back(), &gaze.back(), 0.0};
-    const auto next = std::upper_bound(gaze.begin(), gaze.end(), t,
-                                       [](double time, const GazeKey& k) { return time < k.timeSeconds; });
-    const GazeKey& b = *next;
-    const GazeKey& a = *(next - 1);
-    const double span = b.timeSeconds - a.timeSeconds;
-    return {&a, &b, span > 0.0 ? minimumJerk((t - a.timeSeconds) / span) : 1.0};
-}
-
-std::string formatTimelineJson(const Timeline& timeline) {
-    using Json = nlohmann::ordered_json;
-    auto vec = [](const glm::dvec3& v) { return Json::array({roundTo(v.x, 100.0), roundTo(v.y, 100.0), roundTo(v.z, 100.0)}); };
-    auto hand = [&](const std::vector<TimelineKey>& keys) {
-        Json out = Json::array();
-        for (const TimelineKey& k : keys) {
-            Json j;
-            j["time"] = roundTo(k.timeSeconds, 1e4);
-            if (k.rest) {
-                j["rest"] = true;
-            } else {
-                j["position"] = vec(k.pose.positionMm);
-                j["fingers"] = vec(fingersDirection(k.pose.orientation));
-                j["palm"] = vec(palmDirection(k.pose.orientation));
-                j["handshape"] = k.handshape;
-            }
-            out.push_back(j);
-        }
-        return out;
-    };
-    Json root;
-    root["story"] = timeline.story;
-    root["version"] = timeline.version;
-    root["duration"] = roundTo(timeline.durationSeconds, 1e4);
-    Json spans = Json::array();
-    for (const TimelineSpan& s : timeline.spans)
-        spans.push_back({{"kind", toString(s.kind)}, {"label", s.label}, {"sentence", s.sentence + 1}, {"item", s.item + 1},
-                         {"start", roundTo(s.startSeconds, 1e4)}, {"end", roundTo(s.endSeconds, 1e4)}});
-    root["spans"] = spans;
-    root["right"] = hand(timeline.right);
-    root["left"] = hand(timeline.left);
-    Json gaze = Json::array();
-    for (const GazeKey& g : timeline.gaze) {
-        Json j;
-        j["time"] = roundTo(g.timeSeconds, 1e4);
-        if (g.targetMm) j["target"] = vec(*g.targetMm);
-        else j["target"] = "viewer";
-        gaze.push_back(j);
-    }
-    root["gaze"] = gaze;
-    return root.dump(2) + "\n";
+    const std::size_t boundaries = story.sentences.empty() ? 0 : story.sentences.size() - 1;
+    if (options.restBetweenSentences || boundaries == 0 || options.pauseShare <= 0.0)
+        return Builder(story, version, sources, options, options.restBetweenSentences ? 0.0 : options.boundaryHoldSeconds)
+            .build();
+    // [R: Huenerfauth 2008-09] Holds make up `pauseShare` of the telling: told once without
+    // boundary holds, the holds h solve (holds + n·h) / (telling + n·h) = share, each within
+    // the minimum and maximum. The telling is the same in every version (equal slots), so
+    // the holds are too.
+    const TimelineMeasures bare = measureTimeline(Builder(story, version, sources, options, 0.0).build());
+    const double share = options.pauseShare;
+    const double n = static_cast<double>(boundaries);
+    const double h = (share * bare.tellingSeconds - bare.pauseSeconds) / (n * (1.0 - share)) * options.rate;
+    return Builder(story, version, sources, options,
+                   std::clamp(h, options.boundaryHoldMinimumSeconds, options.boundaryHoldMaximumSeconds))
+        .build();
 }
 
 }  // namespace signstim::stimuli

@@ -5,15 +5,18 @@
 // body moves (the signer, which samples it frame by frame and solves arms, hands and gaze).
 //
 // Rules (docs/stories.md, "Timing"):
-//  - The signer starts and ends at rest; each sentence ends with the hands back at rest.
-//  - Between two items the hands move with a minimum-jerk profile (zero velocity and
-//    acceleration at both ends) in a time that grows with the distance (SPEC [D]).
-//  - A verb occupies a slot of the same length in every version: a fixed transition in, the
-//    verb padded with a hold to the longest of the versions' durations, a fixed transition out
-//    to the next item's first keyframe. Everything outside the verb slots is therefore
-//    identical in the four versions, frame for frame (tested), which lets a study render those
-//    frames once. A HOLD right after a verb, or the sentence's return to rest, belongs to the
-//    verb's slot (the hands hold or leave the verb's own end pose, which differs by version).
+//  - The signer starts and ends at rest; between sentences the last sign is held (a boundary
+//    hold) and the next sentence starts from there (TimelineOptions: the legacy preset rests).
+//  - Between two items the hands move in a Fitts-like time that grows with the distance and
+//    with the precision of what comes next; they stop only where the movement reverses, holds
+//    or starts/ends at rest, and flow through other keys (sampleTrack).
+//  - A verb occupies a slot of the same length in every version: a transition in (the same in
+//    every version), the verb — each version's path slowed where it would be faster than human
+//    — padded with a hold to the longest of the versions, a transition out to the next item's
+//    first keyframe. Everything outside the verb slots is therefore identical in the four
+//    versions, frame for frame (tested), which lets a study render those frames once. A HOLD
+//    right after a verb, a boundary hold or the return to rest belongs to the verb's slot (the
+//    hands hold or leave the verb's own end pose, which differs by version).
 //  - Gaze: toward a referent while pointing at it, toward the object during a verb (the same
 //    in every version), toward the viewer otherwise.
 #include "stimuli/story/handshapes.hpp"
@@ -33,6 +36,9 @@ struct TimelineKey {
     bool rest = false;      // the hand at the signer's resting place, relaxed (pose/handshape unused)
     HandPose pose;          // signing space (stimuli/verbs/signing_space.hpp)
     std::string handshape;  // a name of the handshape library
+    // The hand passes through this key without stopping (coarticulation, sampleTrack): set by
+    // the builder where the movement continues on both sides within one stretch.
+    bool passThrough = false;
 };
 
 struct GazeKey {
@@ -55,6 +61,7 @@ struct TimelineSpan {
     // transition (or at rest after a verb, inside its slot).
     double keysStartSeconds = 0.0, keysEndSeconds = 0.0;
     SignContact contact;  // what the sign or verb touches on purpose (the lexicon's, verbs.json's)
+    int letters = 0;      // fingerspelled letters (fingerspelling and fingerspelled names)
 };
 
 struct Timeline {
@@ -64,34 +71,104 @@ struct Timeline {
     std::vector<TimelineKey> right, left;  // times increase; first at 0, last at durationSeconds
     std::vector<GazeKey> gaze;             // times increase
     std::vector<TimelineSpan> spans;       // in time order; verbs' spans are their slots
+    double pauseSeconds = 0.0;             // held still: HOLD items, boundary holds, rests between sentences
 };
 
 struct TimelineOptions {
-    // [D] Citation timing of the lexicon and verb files is multiplied by 1 / rate: 1 signs at
-    // citation speed (~2 signs/s with transitions, near natural storytelling, which runs at
-    // roughly 2-2.5 signs/s).
+    // The defaults are the natural preset (docs/stories.md, "Timing"; SPEC §6.3);
+    // legacyTimelineOptions() gives the timing before issue 21, for comparison studies.
+    // [D] Every duration below is multiplied by 1 / rate.
     double rate = 1.0;
-    double restSeconds = 0.5;           // at rest before the first and after the last sentence
-    double sentencePauseSeconds = 0.3;  // at rest between sentences
-    double holdSeconds = 0.3;           // HOLD without a duration
-    // [D] Transition time = base + distance / speed, within [minimum, maximum]: quick
-    // transitions of a fluent signer take 0.15-0.3 s.
+    double restSeconds = 0.5;  // at rest before the first and after the last sentence
+    // Sentence boundaries. Signers hold the last sign of a sentence a moment and go on from
+    // there; they return to rest at the end of a turn (SPEC §6.3, Grosjean & Lane 1977).
+    bool restBetweenSentences = false;  // legacy: back to rest between sentences ...
+    double sentencePauseSeconds = 0.3;  // ... for this long
+    // [R: SPEC §6.3, Huenerfauth 2008-09: pauses ~17 % of the total] The boundary holds are
+    // sized so that holds (boundary holds and HOLD items) make up `pauseShare` of the telling
+    // (0: every boundary hold is boundaryHoldSeconds), within the minimum and maximum [D: a
+    // hold of 150-400 ms reads as a boundary, a longer one as a stop].
+    double pauseShare = 0.17;
+    double boundaryHoldSeconds = 0.25;
+    double boundaryHoldMinimumSeconds = 0.15;
+    double boundaryHoldMaximumSeconds = 0.25;
+    double holdSeconds = 0.3;  // HOLD without a duration
+    // [R: Huenerfauth 2008-09, SPEC §6.3] The last sign before a sentence boundary is ~12 %
+    // longer; a sign or fingerspelled word already signed in the story is ~12 % shorter.
+    double boundaryLengthening = 1.12;
+    double repetitionShortening = 0.88;
+    // [D] Citation forms are longer than signs in connected signing (ASL-LEX 2.0's median
+    // SignDuration of a citation form is 834 ms; at 2-2.3 signs/s a sign and its transition
+    // take ~450 ms, the sign itself ~250-300 ms): the lexicon's keys (citation timing, a mean
+    // of 0.49 s) are scaled by this.
+    double signScale = 0.5;
+    // Transitions between items. Fitts-like (MacKenzie 1992's form of Fitts 1954):
+    // T = a + b·log2(1 + D/W), D the hands' largest displacement, W the target's tolerance:
+    // smaller where the next item touches the body or the other hand. [D] a = 0.04 s,
+    // b = 0.06 s/bit with W = 50 mm give 0.1 s for a 50 mm step, 0.21 s for 300 mm and
+    // 0.26 s for 600 mm (where the speed limit below takes over): the 100-250 ms transitions
+    // of fluent signing.
+    bool fittsTransitions = true;
+    double fittsInterceptSeconds = 0.04;
+    double fittsSecondsPerBit = 0.06;
+    double fittsWidthMm = 50.0;
+    double fittsContactWidthMm = 25.0;
+    // Legacy: transition time = base + distance / speed.
     double transitionBaseSeconds = 0.12;
     double transitionMmPerSecond = 1400.0;
-    double transitionMinimumSeconds = 0.15;
-    double transitionMaximumSeconds = 0.5;
-    double verbTransitionSeconds = 0.3;  // in and out of a verb slot, the same in every version
-    double pointingSeconds = 0.35;       // IX held on its referent
-    double letterSeconds = 0.2;          // each fingerspelled letter held
+    double transitionMinimumSeconds = 0.1;
+    double transitionMaximumSeconds = 0.6;
+    // [D, SPEC §6.2: wrist ≤ 2.5 m/s] No keyed stretch is faster than this at its peak
+    // (1.875 × its mean speed under the easing, sampleTrack), the wrist's travel counted as
+    // the hand's displacement plus its swing as the hand turns: transitions, signs and verb
+    // paths are lengthened where they would be. Kept below 2.5 m/s for what the arm solution
+    // and the signer's detours add (measured: `story --check`). 0: no limit (legacy).
+    double peakSpeedMmPerSecond = 2300.0;
+    // Hands pass through the keys of a continuing movement (coarticulation; sampleTrack)
+    // instead of stopping at every key. Legacy: false.
+    bool coarticulation = true;
+    // In and out of a verb slot: 0: the Fitts time of the longest of the versions'
+    // displacements (the same in every version); legacy: a fixed 0.3 s.
+    double verbTransitionSeconds = 0.0;
+    double pointingSeconds = 0.1;  // [D] IX held on its referent (a brief stop in connected signing)
+    // [R: SPEC §6.3, Reed et al. 1990: 2-6 letters/s, fluent near the top; a new handshape
+    // at best every 150-200 ms] 0.12 s held + 0.08 s between: a new handshape every 0.2 s,
+    // 5.4-5.8 letters/s over a word. J and Z draw their strokes in proportion to the hold.
+    double letterSeconds = 0.12;
     double letterTransitionSeconds = 0.08;
     // Where fingerspelling happens: in front of the right shoulder, below the chin [D].
     glm::dvec3 fingerspellingMm{150.0, 170.0, 230.0};
-    // How far the index of IX reaches toward the referent, from the right shoulder [D].
-    double pointingReachMm = 330.0;
+    // IX: the hand goes this far from the origin toward the referent [D: in connected signing
+    // IX is a turn of the forearm in front of the chest toward the locus, not a reach of the
+    // arm from the shoulder; the legacy preset reaches 330 mm from the right shoulder joint].
+    glm::dvec3 pointingOriginMm{150.0, 50.0, 150.0};
+    double pointingReachMm = 150.0;
     // ... but no nearer the chest than this (forward, z) where the hand is in front of it [D:
     // the default signer's chest is ~110 mm deep; the fist needs the rest].
     double pointingMinimumForwardMm = 200.0;
 };
+
+// The timing before issue 21: rest between sentences, no boundary or repetition rules,
+// citation-length signs, distance/speed transitions, fixed 0.3 s verb transitions, hands
+// stopping at every key, 5 letters in 1.4 s.
+TimelineOptions legacyTimelineOptions();
+// The options a story's or study's `timing` object asks for (stimuli/story/timing.hpp), at `rate`.
+TimelineOptions timelineOptionsFor(const StoryTiming& timing, double rate);
+
+// What a viewer sees of the timing (SPEC §6.3; `signstim story --check`). The telling runs
+// from the first key of the first sign to the last key of the last one (the rests at the two
+// ends and the moves to and from them excluded).
+struct TimelineMeasures {
+    double durationSeconds = 0.0, tellingSeconds = 0.0;
+    int signs = 0;  // lexical signs, names, IX, verbs and fingerspelled words, each once
+    int letters = 0;
+    double fingerspellingSeconds = 0.0;  // from each word's first letter to its last
+    double pauseSeconds = 0.0;           // Timeline::pauseSeconds
+    double signsPerSecond() const { return tellingSeconds > 0.0 ? signs / tellingSeconds : 0.0; }
+    double lettersPerSecond() const { return fingerspellingSeconds > 0.0 ? letters / fingerspellingSeconds : 0.0; }
+    double pauseShare() const { return tellingSeconds > 0.0 ? pauseSeconds / tellingSeconds : 0.0; }
+};
+TimelineMeasures measureTimeline(const Timeline& timeline);
 
 // Gives a verb instance in the requested version (point/vector need trained models,
 // animator its keyframe files): the same call stimuli::synthesizeVerb makes for `verb`.
@@ -131,8 +208,16 @@ Timeline buildTimeline(const Story& story, VerbVersion version, const TimelineSo
 
 // Minimum-jerk position profile s(u) = 10u³ − 15u⁴ + 6u⁵ for u in [0, 1] (clamped).
 double minimumJerk(double u);
+// The quintic Hermite ease with zero acceleration at both ends and slopes v0, v1 (du/du at
+// u = 0 and 1; minimumJerk when both are 0). Monotone with a peak slope ≤ 1.875 for slopes in
+// [0, 1.875].
+double hermiteEase(double u, double v0, double v1);
 
 // A hand at time t: the two keys around it and the eased blend (0 at `from`, 1 at `to`).
+// Between keys the blend eases by minimum jerk where the hand stops at both keys; at a key
+// marked passThrough it keeps the Catmull-Rom velocity of its neighbours (projected on each
+// side's straight path), so the hand flows through (hermiteEase). A pure function of the track
+// and t.
 struct TimelineSample {
     const TimelineKey* from = nullptr;
     const TimelineKey* to = nullptr;

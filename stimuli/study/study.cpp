@@ -37,6 +37,7 @@ public:
         if (root.contains("phase2")) readPhase2(root["phase2"]);
         if (root.contains("likertScale")) readScale(root["likertScale"]);
         study_.render = readRender(member(root, "", "render"), "/render", StudyRenderSettings{});
+        study_.quick.timing = study_.render.timing;
         if (root.contains("quick")) study_.quick = readRender(root["quick"], "/quick", study_.quick);
         if (root.contains("outputs")) {
             const json& outputs = root["outputs"];
@@ -205,7 +206,7 @@ private:
     StudyRenderSettings readRender(const json& object, const std::string& pointer, StudyRenderSettings settings) {
         if (!object.is_object())
             source_.failAt(pointer, "expected {\"size\": \"1280x720\", \"fps\": \"30\", \"msaa\": 4, \"rate\": 1}");
-        knownKeys(object, pointer, {"size", "fps", "msaa", "rate"});
+        knownKeys(object, pointer, {"size", "fps", "msaa", "rate", "timing"});
         if (object.contains("size")) {
             const std::string at = pointer + "/size";
             const json& size = object["size"];
@@ -240,6 +241,7 @@ private:
         }
         if (object.contains("rate"))
             settings.rate = source_.number(object["rate"], pointer + "/rate", NumberRange{0.1, 4.0, ""});
+        if (object.contains("timing")) settings.timing = parseStoryTiming(source_, object["timing"], pointer + "/timing");
         return settings;
     }
 
@@ -268,7 +270,7 @@ std::string twoDigits(std::size_t number, std::size_t width = 2) {
 
 std::string StudyRenderSettings::text() const {
     return std::to_string(width) + "x" + std::to_string(height) + ", " + fps + " fps, MSAA " + std::to_string(msaa) +
-           ", rate " + formatNumber(rate);
+           ", rate " + formatNumber(rate) + (timing.given() ? ", timing " + describeTiming(timing) : std::string());
 }
 
 StudyDesignSpec StudyFile::designSpec() const {

@@ -6,6 +6,7 @@
 // all of it into the listing the exports and the review page are written from.
 #include "stimuli/study/study_design.hpp"
 #include "stimuli/study/study_listing.hpp"
+#include "stimuli/story/timing.hpp"
 #include "stimuli/verbs/verb_synthesis.hpp"
 
 #include <array>
@@ -39,7 +40,9 @@ struct StudyRenderSettings {
     int fpsLine = 0;                           // where it is written, for that check's message
     std::uint32_t msaa = 4;                    // 1 or 4 (lavapipe supports these)
     double rate = 1.0;                         // signing rate (stimuli/story/timeline.hpp)
-    std::string text() const;                  // "1280x720, 30 fps, MSAA 4, rate 1"
+    // The timing model (stimuli/story/timing.hpp); when given, it replaces every story's own.
+    StoryTiming timing;
+    std::string text() const;                  // "1280x720, 30 fps, MSAA 4, rate 1[, timing legacy]"
 };
 
 struct StudyFile {
@@ -62,7 +65,7 @@ struct StudyFile {
     int phase2Line = 0;
     int likertMinimum = 1, likertMaximum = 10;  // SPEC §4.3: a 1-to-10 scale
     StudyRenderSettings render;                 // full quality
-    StudyRenderSettings quick{320, 240, "15", 0, 1, 1.0};
+    StudyRenderSettings quick{320, 240, "15", 0, 1, 1.0, {}};  // timing: the render's unless given
     bool pngFrames = false;                     // also write each clip's PNG frames
     StoryOrder order = StoryOrder::Random;      // "order": phase 1's story order (study_design.hpp)
     // "session": what the jsPsych experiment asks (docs/experiment.md). ratingPrompt: the

@@ -26,7 +26,7 @@ FolderFixture folderFixture(const std::string& salt) {
     f.units = studyUnits(f.listing);
     std::vector<std::string> hashes;
     for (const StudyUnit& u : f.units) hashes.push_back("inputs-" + u.id + salt);
-    StudyRenderSettings settings{160, 120, "15", 0, 4, 1.0};
+    StudyRenderSettings settings{160, 120, "15", 0, 4, 1.0, {}};
     f.plan = studyPlan(f.listing, settings, false, f.units, hashes, "");
     return f;
 }
