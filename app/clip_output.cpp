@@ -2,8 +2,10 @@
 
 #include "common/atomic_file.hpp"
 #include "renderer/image_io.hpp"
+#include "renderer/relay_sinks.hpp"
 #include "renderer/renderer.hpp"
 #include "signer/avatar_render.hpp"
+#include "signer/clip_render.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -43,7 +45,7 @@ std::uint64_t renderClipToOutput(const ClipOutput& output, const signer::Signer&
     const bool still = output.kind == render::OutputKind::Image;
     std::unique_ptr<render::FrameSink> target =
         still ? render::makeDiscardSink() : render::makeFrameSink(output.out, {}, video);
-    signer::StillCapturingSink sink(*target, static_cast<std::uint64_t>(stillSeconds * options.framesPerSecond));
+    render::StillCapturingSink sink(*target, static_cast<std::uint64_t>(stillSeconds * options.framesPerSecond));
     // Progress: on a terminal one line rewritten in place, otherwise a line a second; with
     // the time left estimated from the frames so far.
     const bool terminal = ::isatty(STDERR_FILENO) == 1;

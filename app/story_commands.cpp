@@ -6,11 +6,12 @@
 #include "stimuli/story/story_world.hpp"
 #include "common/error.hpp"
 #include "signer/clearance.hpp"
+#include "signer/signer.hpp"
 #include "signer/timeline_clip.hpp"
 #include "stimuli/story/lexicon.hpp"
 #include "stimuli/scenes_path.hpp"
 #include "stimuli/story/story.hpp"
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 #include "stimuli/verbs/verb_models.hpp"
 
 #include <cmath>
@@ -62,7 +63,7 @@ void reportClearance(const StoryWorld& world, const Story& story, const Timeline
     std::printf("closest approach of the hands (mm; negative: they overlap), every frame at 30 fps:\n");
     std::vector<std::string> warnings;
     for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
-        const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(story, v, world.sources(story), timing));
+        const TimelineClip clip(signer.rig(), buildTimeline(story, v, world.sources(story), timing));
         const Timeline& t = clip.timeline();
         const ClearanceSummary summary = checkClearance(t, clearanceFrames(signer.rig(), clip));
         std::printf("  %s: at transitions %s; in signs %s; in signs where they touch %s\n", toString(v).c_str(),
@@ -93,7 +94,7 @@ void renderStory(const StoryOptions& o, const StoryWorld& world, const Story& st
     TimelineOptions timing;
     timing.rate = o.rate;
     const Signer signer(world.scenes);
-    const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(story, version, world.sources(story), timing));
+    const TimelineClip clip(signer.rig(), buildTimeline(story, version, world.sources(story), timing));
     // The still: the middle of the first verb (where the versions differ), else the middle.
     double stillSeconds = 0.5 * clip.durationSeconds();
     for (const TimelineSpan& span : clip.timeline().spans)

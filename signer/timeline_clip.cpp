@@ -1,6 +1,6 @@
 #include "signer/timeline_clip.hpp"
 
-#include "signer/clearance.hpp"
+#include "signer/hand_capsules.hpp"
 #include "signer/signer_pose.hpp"
 
 #include <algorithm>
@@ -60,9 +60,7 @@ struct Gaps {
 };
 
 Gaps measure(const SignerRig& rig, const SignerPosture& posture, const PoseReport& arms) {
-    SignerCapsules capsules;
-    handCapsules(rig, hand::Side::Right, posture.rightHand, arms.right.wristMm, arms.right.hand, capsules.right);
-    handCapsules(rig, hand::Side::Left, posture.leftHand, arms.left.wristMm, arms.left.hand, capsules.left);
+    const SignerCapsules capsules = signerCapsules(rig, posture, arms);
     Gaps g;
     g.handsApproach = closestApproach(capsules.right, capsules.left);
     g.hands = g.handsApproach.gapMm;
@@ -83,11 +81,7 @@ glm::vec3 gazePointForReferent(const glm::dvec3& p) {
 
 glm::vec3 gazePointForViewer() { return glm::vec3(0.0f, static_cast<float>(kEyeHeightMm), 2000.0f); }
 
-TimelineClip::TimelineClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes, stimuli::Timeline timeline)
-    : rig_(&rig), shapes_(&shapes), timeline_(std::move(timeline)) {
-    for (const auto* track : {&timeline_.right, &timeline_.left})
-        for (const stimuli::TimelineKey& key : *track)
-            if (!key.rest) shapes.at(key.handshape);
+TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline) : rig_(&rig), timeline_(std::move(timeline)) {
     // Transitions: neighbouring keys that no item's own keys hold (both hands have keys at
     // every transition's ends; the right track lists them). Routed in time order, following
     // the arms frame by frame as they will be drawn, since a detour changes where the elbows
@@ -263,7 +257,7 @@ SignerPosture TimelineClip::straightPostureAt(double seconds) const {
         const stimuli::TimelineSample sample = stimuli::sampleTrack(track, seconds);
         auto resolve = [&](const stimuli::TimelineKey& key) {
             if (key.rest) return Resolved{rig_->restingTarget(side), relaxedHand()};
-            return Resolved{armTargetFromSigningSpace(key.pose), shapes_->at(key.handshape).controls};
+            return Resolved{armTargetFromSigningSpace(key.pose), key.controls};
         };
         const Resolved from = resolve(*sample.from), to = resolve(*sample.to);
         const float blend = static_cast<float>(sample.blend);

@@ -7,14 +7,14 @@
 // Transitions are routed around the hands and the body. Between two items the timeline's
 // hands blend straight from one pose to the next (minimum jerk), and a straight blend knows
 // nothing of the hands' shape: fingers turning toward the resting place, or one hand passing
-// the other, would go through the other hand or the body. Where it would (signer/clearance.hpp
+// the other, would go through the other hand or the body. Where it would (signer/hand_capsules.hpp
 // geometry, on the wrist targets), the wrists take a detour: each moving hand is pushed aside
 // by an offset times a bump that is 0, with zero velocity and acceleration, at both ends of the
 // transition, so the keys and the smoothness of the profile are kept. The detour keeps the
 // hands at least kTransitionClearanceMm apart, or as close as they are at the transition's
 // ends when an item there has them touching. A detour depends only on the keys at its ends,
 // so frames outside the verb slots stay the same in every version.
-#include "signer/verb_render.hpp"
+#include "signer/clip.hpp"
 #include "stimuli/story/timeline.hpp"
 
 #include <optional>
@@ -24,8 +24,8 @@ namespace signstim::signer {
 
 class TimelineClip final : public Clip {
 public:
-    // Throws InputError when a key names a handshape the library lacks.
-    TimelineClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes, stimuli::Timeline timeline);
+    // The keys carry their hand controls (resolved by the timeline's builder).
+    TimelineClip(const SignerRig& rig, stimuli::Timeline timeline);
 
     double durationSeconds() const override { return timeline_.durationSeconds; }
     SignerPosture postureAt(double seconds) const override;
@@ -54,7 +54,6 @@ private:
     Detour routeTransition(double startSeconds, double endSeconds, const ArmChain& chain) const;
 
     const SignerRig* rig_;
-    const stimuli::HandshapeLibrary* shapes_;
     stimuli::Timeline timeline_;
     std::vector<Detour> detours_;  // in time order
 };

@@ -1,4 +1,4 @@
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 
 #include "stimuli/verbs/signing_space.hpp"
 #include "stimuli/verbs/sora.hpp"
@@ -96,6 +96,10 @@ public:
             place(rest, SpanKind::Rest, "rest", static_cast<int>(s), -1, std::nullopt);
         }
         timeline_.durationSeconds = now_;
+        // The keys carry their handshapes' controls, so the signer needs no library of its own.
+        for (int h : {kRight, kLeft})
+            for (TimelineKey& k : track(h))
+                if (!k.rest) k.controls = sources_.shapes->at(k.handshape).controls;
         return std::move(timeline_);
     }
 

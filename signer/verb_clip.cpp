@@ -1,0 +1,57 @@
+#include "signer/verb_clip.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace signstim::signer {
+namespace {
+
+double smoothstep(double u) {
+    u = std::clamp(u, 0.0, 1.0);
+    return u * u * (3.0 - 2.0 * u);
+}
+
+hand::Side toHandSide(stimuli::HandSide side) {
+    return side == stimuli::HandSide::Right ? hand::Side::Right : hand::Side::Left;
+}
+
+}  // namespace
+
+VerbClip::VerbClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes,
+                   stimuli::VerbPerformance performance, ClipTiming timing)
+    : rig_(&rig), shapes_(&shapes), performance_(std::move(performance)), timing_(timing) {
+    for (const stimuli::HandTrack& track : performance_.hands)
+        for (const stimuli::PerformanceKeyframe& key : track.keyframes) shapes.at(key.handshape);
+}
+
+double VerbClip::durationSeconds() const {
+    return timing_.leadInSeconds + performance_.durationSeconds + timing_.holdSeconds;
+}
+
+SignerPosture VerbClip::postureAt(double seconds) const {
+    SignerPosture posture;
+    posture.rightHand = posture.leftHand = relaxedHand();
+    const double verbTime = seconds - timing_.leadInSeconds;
+    // Lead-in: rise from rest with an ease-in-out, reaching the first keyframe as the verb begins.
+    const float rise =
+        timing_.leadInSeconds > 0.0 ? static_cast<float>(smoothstep(seconds / timing_.leadInSeconds)) : 1.0f;
+    for (const stimuli::HandTrack& track : performance_.hands) {
+        const hand::Side side = toHandSide(track.side);
+        const stimuli::HandSample sample = stimuli::sampleHand(track, std::max(0.0, verbTime));
+        hand::HandControls controls =
+            hand::interpolate(shapes_->at(sample.handshapeFrom).controls, shapes_->at(sample.handshapeTo).controls,
+                              static_cast<float>(sample.handshapeBlend));
+        hand::ArmTarget target = armTargetFromSigningSpace(sample.pose);
+        if (rise < 1.0f) target = blendTargets(rig_->restingTarget(side), target, rise);
+        if (side == hand::Side::Right) {
+            posture.rightHand = controls;
+            posture.rightWrist = target;
+        } else {
+            posture.leftHand = controls;
+            posture.leftWrist = target;
+        }
+    }
+    return posture;
+}
+
+}  // namespace signstim::signer
