@@ -23,7 +23,7 @@ struct ClearanceFrame {
 };
 
 // Every frame of `clip` at `framesPerSecond`, from 0 to its end inclusive, posed as
-// renderClips poses them (ClipPoser: the previous frame's elbows, fresh after a verb slot).
+// renderClips poses them (ClipPoser).
 std::vector<ClearanceFrame> clearanceFrames(const SignerRig& rig, const TimelineClip& clip,
                                             double framesPerSecond = 30.0);
 

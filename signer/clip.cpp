@@ -18,7 +18,16 @@ hand::HandControls relaxedHand() {
     return controls;
 }
 
+glm::vec3 blendElbowHints(const glm::vec3& a, const glm::vec3& b, float t) {
+    const glm::vec3 v = a + t * (b - a);
+    return glm::length(v) > 1e-4f ? glm::normalize(v) : (t < 0.5f ? a : b);
+}
+
 hand::ArmTarget blendTargets(const hand::ArmTarget& a, const hand::ArmTarget& b, float t) {
+    // Exactly the ends at 0 and 1 (slerp's rounding would make a posture at rest differ in
+    // its last bits with the other end, and so the versions of a verb at their common rest).
+    if (t <= 0.0f) return a;
+    if (t >= 1.0f) return b;
     hand::ArmTarget out;
     out.wristMm = a.wristMm + t * (b.wristMm - a.wristMm);
     out.handRotation = glm::slerp(a.handRotation, glm::dot(a.handRotation, b.handRotation) < 0.0f
@@ -35,15 +44,10 @@ hand::ArmTarget armTargetFromSigningSpace(const stimuli::HandPose& pose) {
     return target;
 }
 
-render::Pose ClipPoser::next(double seconds, SignerPosture* posture, PoseReport* report) {
-    if (previous_ && clip_->solveAfresh(previousSeconds_, seconds)) previous_.reset();
+render::Pose ClipPoser::next(double seconds, SignerPosture* posture, PoseReport* report) const {
     const SignerPosture wanted = clip_->postureAt(seconds);
-    PoseReport solved;
-    render::Pose pose = rig_->pose(wanted, &solved, previous_ ? &*previous_ : nullptr);
-    previous_ = solved;
-    previousSeconds_ = seconds;
+    render::Pose pose = rig_->pose(wanted, report);
     if (posture) *posture = wanted;
-    if (report) *report = solved;
     return pose;
 }
 

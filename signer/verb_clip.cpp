@@ -22,6 +22,14 @@ VerbClip::VerbClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes
     : rig_(&rig), shapes_(&shapes), performance_(std::move(performance)), timing_(timing) {
     for (const stimuli::HandTrack& track : performance_.hands)
         for (const stimuli::PerformanceKeyframe& key : track.keyframes) shapes.at(key.handshape);
+    for (const stimuli::HandTrack& track : performance_.hands) {
+        const hand::Side side = toHandSide(track.side);
+        restElbows_.push_back(hand::solveArm(rig.arm(side), rig.restingTarget(side)).elbowDirection);
+        std::vector<glm::vec3> elbows;
+        for (const stimuli::PerformanceKeyframe& key : track.keyframes)
+            elbows.push_back(hand::solveArm(rig.arm(side), armTargetFromSigningSpace(key.pose)).elbowDirection);
+        keyElbows_.push_back(std::move(elbows));
+    }
 }
 
 double VerbClip::durationSeconds() const {
@@ -35,9 +43,23 @@ SignerPosture VerbClip::postureAt(double seconds) const {
     // Lead-in: rise from rest with an ease-in-out, reaching the first keyframe as the verb begins.
     const float rise =
         timing_.leadInSeconds > 0.0 ? static_cast<float>(smoothstep(seconds / timing_.leadInSeconds)) : 1.0f;
-    for (const stimuli::HandTrack& track : performance_.hands) {
+    for (std::size_t h = 0; h < performance_.hands.size(); ++h) {
+        const stimuli::HandTrack& track = performance_.hands[h];
         const hand::Side side = toHandSide(track.side);
         const stimuli::HandSample sample = stimuli::sampleHand(track, std::max(0.0, verbTime));
+        // The elbow hint: blended between the keyframes' elbows as sampleHand blends the poses.
+        const std::vector<stimuli::PerformanceKeyframe>& keys = track.keyframes;
+        const std::vector<glm::vec3>& elbows = keyElbows_[h];
+        glm::vec3 elbow = elbows.empty() ? restElbows_[h] : elbows.front();
+        if (keys.size() > 1 && verbTime >= keys.back().timeSeconds) {
+            elbow = elbows.back();
+        } else if (keys.size() > 1 && verbTime > keys.front().timeSeconds) {
+            std::size_t i = 1;
+            while (keys[i].timeSeconds < verbTime) ++i;
+            const double u = (verbTime - keys[i - 1].timeSeconds) / (keys[i].timeSeconds - keys[i - 1].timeSeconds);
+            elbow = blendElbowHints(elbows[i - 1], elbows[i], static_cast<float>(smoothstep(u)));
+        }
+        if (rise < 1.0f) elbow = blendElbowHints(restElbows_[h], elbow, rise);
         hand::HandControls controls =
             hand::interpolate(shapes_->at(sample.handshapeFrom).controls, shapes_->at(sample.handshapeTo).controls,
                               static_cast<float>(sample.handshapeBlend));
@@ -46,9 +68,11 @@ SignerPosture VerbClip::postureAt(double seconds) const {
         if (side == hand::Side::Right) {
             posture.rightHand = controls;
             posture.rightWrist = target;
+            posture.rightElbowHint = elbow;
         } else {
             posture.leftHand = controls;
             posture.leftWrist = target;
+            posture.leftElbowHint = elbow;
         }
     }
     return posture;

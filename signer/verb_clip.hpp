@@ -8,6 +8,8 @@
 #include "stimuli/story/handshapes.hpp"
 #include "stimuli/verbs/verb_synthesis.hpp"
 
+#include <vector>
+
 namespace signstim::signer {
 
 struct ClipTiming {
@@ -33,6 +35,9 @@ private:
     const stimuli::HandshapeLibrary* shapes_;
     stimuli::VerbPerformance performance_;
     ClipTiming timing_;
+    // Per hand track: the solver's elbow at rest and at each keyframe (SignerPosture's hints).
+    std::vector<glm::vec3> restElbows_;
+    std::vector<std::vector<glm::vec3>> keyElbows_;
 };
 
 }  // namespace signstim::signer
