@@ -3,8 +3,10 @@
 #include "app/progress.hpp"
 #include "common/atomic_file.hpp"
 #include "renderer/image_io.hpp"
+#include "renderer/relay_sinks.hpp"
 #include "renderer/renderer.hpp"
 #include "signer/avatar_render.hpp"
+#include "signer/clip_render.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -43,7 +45,7 @@ std::uint64_t renderClipToOutput(const ClipOutput& output, const signer::Signer&
     const bool still = output.kind == render::OutputKind::Image;
     std::unique_ptr<render::FrameSink> target =
         still ? render::makeDiscardSink() : render::makeFrameSink(output.out, {}, video);
-    signer::StillCapturingSink sink(*target, static_cast<std::uint64_t>(stillSeconds * options.framesPerSecond));
+    render::StillCapturingSink sink(*target, static_cast<std::uint64_t>(stillSeconds * options.framesPerSecond));
     std::unique_ptr<ProgressReporter> progress;
     const std::uint64_t frames = signer::renderClips(
         renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink,

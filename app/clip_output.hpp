@@ -10,7 +10,8 @@
 #include "renderer/frame_sink.hpp"
 #include "renderer/video_encoder.hpp"
 #include "renderer/renderer.hpp"
-#include "signer/verb_render.hpp"
+#include "signer/clip.hpp"
+#include "signer/signer.hpp"
 
 #include <cstdint>
 #include <filesystem>

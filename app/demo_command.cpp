@@ -6,12 +6,15 @@
 #include "app/commands.hpp"
 #include "app/progress.hpp"
 #include "signer/signer_pose.hpp"
-#include "signer/verb_render.hpp"
+#include "signer/clip_render.hpp"
+#include "signer/signer.hpp"
+#include "signer/verb_clip.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/file_manifest.hpp"
 #include "renderer/frame_sink.hpp"
 #include "renderer/image_io.hpp"
+#include "renderer/relay_sinks.hpp"
 #include "renderer/renderer.hpp"
 #include "stimuli/story/handshapes.hpp"
 #include "stimuli/scenes_path.hpp"
@@ -92,7 +95,7 @@ void runDemo(const DemoOptions& o) {
     const Signer signer(scenes);
     const render::Scene& avatar = signer.avatar();
     const SignerRig& rig = signer.rig();
-    const stimuli::HandshapeLibrary& shapes = signer.shapes();
+    const stimuli::HandshapeLibrary shapes = stimuli::loadHandshapes(scenes / "handshapes.json", rig.handModel());
     const stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(scenes / "verbs.json");
     const stimuli::TrainedVerbModels models = stimuli::loadVerbModels(scenes / "models" / "verb_models.json", verbs);
     const stimuli::VerbSources sources{&verbs, &models, scenes / "animator", &shapes};  // unknown handshapes name their file
@@ -176,7 +179,7 @@ void runDemo(const DemoOptions& o) {
         for (const VerbClip& clip : clips[v]) views.push_back(&clip);
         const double middle = clips[v].front().middleOfVerbSeconds();
         auto videoSink = render::makeVideoSink(movie, video);
-        StillCapturingSink sink(*videoSink, static_cast<std::uint64_t>(middle * fps));
+        render::StillCapturingSink sink(*videoSink, static_cast<std::uint64_t>(middle * fps));
         const std::uint64_t frames = renderClips(
             renderer, handle, avatar, rig, views, labels, clipOptions, sink,
             [&](std::uint64_t done, std::uint64_t total) {

@@ -8,11 +8,12 @@
 #include "common/error.hpp"
 #include "common/standard_output.hpp"
 #include "signer/clearance.hpp"
+#include "signer/signer.hpp"
 #include "signer/timeline_clip.hpp"
 #include "stimuli/story/lexicon.hpp"
 #include "stimuli/scenes_path.hpp"
 #include "stimuli/story/story.hpp"
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 #include "stimuli/verbs/verb_models.hpp"
 
 #include <cmath>
@@ -73,7 +74,7 @@ void reportClearance(const StoryWorld& world, const Story& story, const Timeline
             std::printf("  %s: not checked (keyframe files missing)\n", toString(v).c_str());
             continue;
         }
-        const TimelineClip clip(signer.rig(), signer.shapes(), std::move(*built));
+        const TimelineClip clip(signer.rig(), std::move(*built));
         const Timeline& t = clip.timeline();
         const ClearanceSummary summary = checkClearance(t, clearanceFrames(signer.rig(), clip));
         std::printf("  %s: at transitions %s; in signs %s; in signs where they touch %s\n", toString(v).c_str(),
@@ -107,7 +108,7 @@ bool reportPace(const StoryWorld& world, const Story& story, const TimelineOptio
                 preset.c_str());
     std::vector<std::string> warnings;
     for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
-        const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(story, v, world.sources(story), timing));
+        const TimelineClip clip(signer.rig(), buildTimeline(story, v, world.sources(story), timing));
         const StoryPace pace = measurePace(signer.rig(), clip);
         const TimelineMeasures& m = pace.measures;
         std::printf("  %s: %.2f s (telling %.2f s): %.2f signs/s (%d signs)", toString(v).c_str(), m.durationSeconds,
@@ -134,7 +135,7 @@ void renderStory(const StoryOptions& o, const StoryWorld& world, const Story& st
     const ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
     const TimelineOptions timing = storyTiming(o, story);
     const Signer signer(world.scenes);
-    const TimelineClip clip(signer.rig(), signer.shapes(), buildTimeline(story, version, world.sources(story), timing));
+    const TimelineClip clip(signer.rig(), buildTimeline(story, version, world.sources(story), timing));
     // The still: the middle of the first verb (where the versions differ), else the middle.
     double stillSeconds = 0.5 * clip.durationSeconds();
     for (const TimelineSpan& span : clip.timeline().spans)

@@ -3,7 +3,7 @@
 // pace (stimuli::measureTimeline) and the posed signer's peak wrist and head speeds, with the
 // limits of SPEC §6.2-6.3 they break.
 #include "signer/timeline_clip.hpp"
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 
 #include <string>
 #include <vector>

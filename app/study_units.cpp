@@ -5,10 +5,12 @@
 #include "common/file_manifest.hpp"
 #include "renderer/frame_sink.hpp"
 #include "renderer/image_io.hpp"
+#include "renderer/relay_sinks.hpp"
 #include "renderer/renderer.hpp"
 #include "signer/avatar_render.hpp"
 #include "signer/timeline_clip.hpp"
-#include "signer/verb_render.hpp"
+#include "signer/clip_render.hpp"
+#include "signer/signer.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -30,33 +32,11 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 
 // ---- sinks ----------------------------------------------------------------------------------
 
-// Every frame to both sinks (the MP4 and, when asked, the PNG frames).
-class TeeSink final : public render::FrameSink {
-public:
-    TeeSink(render::FrameSink& first, render::FrameSink& second) : first_(first), second_(second) {}
-    void push(render::Image&& frame) override {
-        first_.push(render::Image(frame));
-        second_.push(std::move(frame));
-        ++count_;
-    }
-    void finish() override {
-        first_.finish();
-        second_.finish();
-    }
-    std::uint64_t framesPushed() const override { return count_; }
-    bool recycle(render::Image& out) override { return second_.recycle(out); }
-
-private:
-    render::FrameSink& first_;
-    render::FrameSink& second_;
-    std::uint64_t count_ = 0;
-};
-
 // The sinks of one clip: MP4, optional PNG frames, the poster captured on the way.
 struct ClipSinks {
     std::unique_ptr<render::FrameSink> video, frames;
-    std::unique_ptr<TeeSink> tee;
-    std::unique_ptr<signer::StillCapturingSink> still;
+    std::unique_ptr<render::TeeSink> tee;  // the MP4 and, when asked, the PNG frames
+    std::unique_ptr<render::StillCapturingSink> still;
     bool finished = false;
     render::FrameSink* entry() { return still.get(); }
     void finish() {
@@ -77,10 +57,10 @@ std::unique_ptr<ClipSinks> makeClipSinks(const fs::path& dir, const ListedClip& 
     render::FrameSink* next = sinks->video.get();
     if (!clip.frames.empty()) {
         sinks->frames = render::makePngSequenceSink(dir / clip.frames, {}, 1);
-        sinks->tee = std::make_unique<TeeSink>(*sinks->video, *sinks->frames);
+        sinks->tee = std::make_unique<render::TeeSink>(*sinks->video, *sinks->frames);
         next = sinks->tee.get();
     }
-    sinks->still = std::make_unique<signer::StillCapturingSink>(*next, posterFrame);
+    sinks->still = std::make_unique<render::StillCapturingSink>(*next, posterFrame);
     return sinks;
 }
 
@@ -122,7 +102,7 @@ struct UnitRenderer::State {
                 const std::function<void(double)>& progress, StudyRunReport& report) {
         std::vector<std::unique_ptr<signer::TimelineClip>> clips;
         for (const Timeline& t : timelines)
-            clips.push_back(std::make_unique<signer::TimelineClip>(signer_.rig(), signer_.shapes(), t));
+            clips.push_back(std::make_unique<signer::TimelineClip>(signer_.rig(), t));
         std::vector<const signer::Clip*> clipPointers;
         for (const auto& c : clips) clipPointers.push_back(c.get());
         const double fps = s_.frameRate.value();

@@ -3,7 +3,9 @@
 #include "app/cli_values.hpp"
 #include "app/clip_output.hpp"
 #include "app/commands.hpp"
-#include "signer/verb_render.hpp"
+#include "signer/signer.hpp"
+#include "signer/verb_clip.hpp"
+#include "stimuli/story/handshapes.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/standard_output.hpp"
@@ -89,7 +91,8 @@ void printSummary(const VerbPerformance& p) {
 void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, const VerbPerformance& performance) {
     const ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
     const Signer signer(scenesDir, o.avatarFile, o.boneMapFile.empty() ? BoneMapping{} : loadBoneMapping(o.boneMapFile));
-    const VerbClip clip(signer.rig(), signer.shapes(), performance);
+    const stimuli::HandshapeLibrary shapes = stimuli::loadHandshapes(scenesDir / "handshapes.json", signer.rig().handModel());
+    const VerbClip clip(signer.rig(), shapes, performance);
     const std::uint64_t frames = renderClipToOutput(output, signer, clip, clip.middleOfVerbSeconds());
     std::printf("%s: %s %s, %llu frame%s\n", output.out.string().c_str(), performance.verb.c_str(),
                 toString(performance.version).c_str(), static_cast<unsigned long long>(frames), frames == 1 ? "" : "s");

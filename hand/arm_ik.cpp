@@ -106,9 +106,11 @@ Candidate evaluate(const Geometry& g, float swivel) {
     const float inFront = smoothstep(arm.torsoFrontMm, arm.torsoFrontMm + 60.0f, c.elbowMm.z);
     const float torsoDeficit =
         (1.0f - inFront) * std::max(0.0f, arm.minElbowLateralMm - glm::dot(c.elbowMm, side)) / 50.0f;
+    const float elbowRise = std::max(0.0f, c.elbowMm.y - std::max(g.shoulder.y, g.wrist.y)) / 100.0f;
     c.cost = g.options->poleWeight * s * s + g.options->wristComfortWeight * wristCost +
              g.options->shoulderLimitWeight * shoulderRad * shoulderRad +
-             g.options->torsoWeight * torsoDeficit * torsoDeficit;
+             g.options->torsoWeight * torsoDeficit * torsoDeficit +
+             g.options->elbowHeightWeight * elbowRise * elbowRise;
     return c;
 }
 
@@ -225,7 +227,10 @@ ArmPose solveArm(const ArmModel& arm, const ArmTarget& target, const ArmSolveOpt
             windowed = true;
         }
     }
-    if (!windowed) swivel = searchSwivel(g, -kPi, kPi, 3.0f * kDeg);
+    if (!windowed) {
+        const float window = std::clamp(options.swivelWindowDeg, 1.0f, 180.0f) * kDeg;
+        swivel = searchSwivel(g, -window, window, 3.0f * kDeg);
+    }
 
     const Candidate c = evaluate(g, swivel);
     ArmPose pose;

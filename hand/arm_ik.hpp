@@ -41,11 +41,15 @@ struct ArmLimits {
     // binding when the arm is raised (weighted by sin(elevation)).
     AngleRange shoulderPlane{-40.0f, 135.0f};
     // Forearm rotation from neutral (thumb up when the elbow is bent at the side):
-    // + supination (palm up), − pronation (palm down).
+    // + supination (palm up), − pronation (palm down). AAOS / Norkin & White give 0–80° each;
+    // these wider limits are what the lexicon's contact signs were authored with (issue 21:
+    // tightening them sinks some into the body).
     AngleRange supination{-85.0f, 90.0f};
-    // Wrist: + flexion (palm toward the forearm), − extension.
+    // Wrist: + flexion (palm toward the forearm), − extension. AAOS: flexion 0–80°,
+    // extension 0–70°.
     AngleRange wristFlexion{-70.0f, 80.0f};
-    // Wrist: + ulnar deviation (toward the little finger), − radial deviation.
+    // Wrist: + ulnar deviation (toward the little finger), − radial deviation. AAOS: ulnar
+    // 0–30° (wider here, as supination), radial 0–20°.
     AngleRange wristUlnarDeviation{-20.0f, 35.0f};
 };
 
@@ -87,6 +91,11 @@ struct ArmSolveOptions {
     // neighbouring frames.
     std::optional<glm::vec3> previousElbowDirection;
     float maxSwivelStepDeg = 20.0f;
+    // Without a previous elbow: the swivel is sought only within this angle of the natural
+    // pole [D]. The rule of the target that picks the elbow (issue 21: a pose is a function of
+    // its instant, never of the last frame): the elbow stays on the low, outer side of the
+    // shoulder-wrist axis, never swung over it.
+    float swivelWindowDeg = 75.0f;
     // Cost weights of the 1-D swivel search [D]: stay near the natural pole, keep the wrist
     // comfortable (far from its limits), respect the shoulder limits, keep the elbow out of
     // the torso.
@@ -94,6 +103,11 @@ struct ArmSolveOptions {
     float wristComfortWeight = 0.3f;
     float shoulderLimitWeight = 20.0f;
     float torsoWeight = 20.0f;
+    // [D] The elbow above both its shoulder joint and the wrist, per 100 mm: a signer lifts
+    // the elbow above the shoulder only as far as a raised hand takes it, not as the arm's
+    // highest point; the wrist bends (to its limits) instead. Moderate: stronger, the hands of
+    // contact signs at the forehead (HUSBAND) sink into it.
+    float elbowHeightWeight = 20.0f;
 };
 
 struct ArmPose {

@@ -22,13 +22,10 @@ void yawPitch(const glm::vec3& d, float& yawDeg, float& pitchDeg) {
 }  // namespace
 
 GazePose solveGaze(const GazeModel& model, const glm::vec3& targetMm) {
-    GazePose pose;
     const glm::vec3 d = targetMm - model.eyesMm;
-    if (glm::length(d) < 1e-3f) return pose;  // looking at its own eyes: keep straight ahead
-    const glm::vec3 dir = glm::normalize(d);
+    if (glm::length(d) < 1e-3f) return GazePose{};  // looking at its own eyes: keep straight ahead
     float yaw = 0.0f, pitch = 0.0f;
-    yawPitch(dir, yaw, pitch);
-
+    yawPitch(glm::normalize(d), yaw, pitch);
     // Head takes its share; if the eyes cannot make up the rest, the head turns further.
     const auto split = [](float total, float share, const AngleRange& head, const AngleRange& eye) {
         float h = head.clamp(total * share);
@@ -36,8 +33,17 @@ GazePose solveGaze(const GazeModel& model, const glm::vec3& targetMm) {
         h = head.clamp(total - e);
         return h;
     };
-    pose.headYawDeg = split(yaw, model.headShare, model.headYaw, model.eyeYaw);
-    pose.headPitchDeg = split(pitch, model.headShare, model.headPitch, model.eyePitch);
+    return solveGazeWithHead(model, targetMm, split(yaw, model.headShare, model.headYaw, model.eyeYaw),
+                             split(pitch, model.headShare, model.headPitch, model.eyePitch));
+}
+
+GazePose solveGazeWithHead(const GazeModel& model, const glm::vec3& targetMm, float headYawDeg, float headPitchDeg) {
+    GazePose pose;
+    const glm::vec3 d = targetMm - model.eyesMm;
+    if (glm::length(d) < 1e-3f) return pose;
+    const glm::vec3 dir = glm::normalize(d);
+    pose.headYawDeg = model.headYaw.clamp(headYawDeg);
+    pose.headPitchDeg = model.headPitch.clamp(headPitchDeg);
     pose.head = look(pose.headYawDeg, pose.headPitchDeg);
     pose.neck = look(model.neckShare * pose.headYawDeg, model.neckShare * pose.headPitchDeg);
 

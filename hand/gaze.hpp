@@ -11,8 +11,10 @@ namespace signstim::hand {
 struct GazeModel {
     glm::vec3 eyesMm{0.0f, 420.0f, 70.0f};  // midpoint between the eyes, looking ahead
     // [S] Cervical range of motion (yaw ±70–80°, flexion 45–50°, extension 60°) trimmed to
-    // comfortable gaze shifts; eye-in-head range ±35° yaw, ±25° pitch.
-    AngleRange headYaw{-70.0f, 70.0f};
+    // comfortable gaze shifts: in natural head-free gaze shifts the head turns no more than
+    // ~45° and the eyes stay within ~30–35° of the orbit's centre (Freedman & Sparks 1997;
+    // Goossens & Van Opstal 1997), so a glance toward a far referent is eyes and head together.
+    AngleRange headYaw{-45.0f, 45.0f};
     AngleRange headPitch{-35.0f, 35.0f};  // + looks up
     AngleRange eyeYaw{-35.0f, 35.0f};
     AngleRange eyePitch{-25.0f, 25.0f};
@@ -35,5 +37,10 @@ struct GazePose {
 // Yaw/pitch toward `targetMm`, split between head (and neck) and eyes, each within its
 // limits. A target behind the signer is approached as far as the limits allow and reported.
 GazePose solveGaze(const GazeModel& model, const glm::vec3& targetMm);
+
+// The eyes toward `targetMm` with the head held at `headYawDeg`, `headPitchDeg` (clamped to the
+// head's limits): the head of a gaze shift still on its way (it lags the eyes), the eyes
+// taking the rest within their limits.
+GazePose solveGazeWithHead(const GazeModel& model, const glm::vec3& targetMm, float headYawDeg, float headPitchDeg);
 
 }  // namespace signstim::hand

@@ -2,6 +2,7 @@
 // Headless Vulkan 1.3 renderer: offscreen colour + depth, MSAA 1x/4x with resolve, readback
 // to host memory. Prefers a discrete, then integrated GPU, else Mesa lavapipe (CPU).
 // Owned by the Vulkan side (renderer/vk_*.cpp, renderer/renderer.cpp).
+#include "renderer/device_info.hpp"
 #include "renderer/frame.hpp"
 #include "renderer/image.hpp"
 #include "renderer/scene.hpp"
@@ -14,17 +15,6 @@
 #include <vector>
 
 namespace signstim::render {
-
-struct DeviceInfo {
-    std::uint32_t index = 0;
-    std::string name;
-    std::string type;        // "discrete", "integrated", "virtual", "cpu", "other"
-    std::string driver;      // driver name and info
-    std::string apiVersion;  // "1.3.230"
-    std::vector<std::uint32_t> sampleCounts;  // supported colour+depth MSAA counts
-    bool usable = false;     // Vulkan 1.3 with dynamic rendering and synchronization2
-    bool automatic = false;  // the device chosen when RendererOptions::device is empty
-};
 
 struct Lighting {
     // Defaults suit sign-language video: key from front-above, fill, rim; hands and face

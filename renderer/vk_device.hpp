@@ -2,7 +2,7 @@
 // Physical-device listing and selection (discrete > integrated > virtual > cpu), and the
 // logical device with one graphics queue and the Vulkan 1.3 features we rely on
 // (dynamic rendering, synchronization2).
-#include "renderer/renderer.hpp"
+#include "renderer/device_info.hpp"
 
 #include <vulkan/vulkan.h>
 

@@ -389,15 +389,22 @@ hand::ArmTarget SignerRig::presentingTarget(hand::Side side) const {
     return {{-right.wristMm.x, right.wristMm.y, right.wristMm.z}, mirrorHandRotation(right.handRotation)};
 }
 
-hand::ArmPose SignerRig::solveArm(hand::Side side, const SignerPosture& posture, const PoseReport* previous) const {
+hand::ArmPose SignerRig::solveArm(hand::Side side, const SignerPosture& posture) const {
     const bool right = side == hand::Side::Right;
     const hand::ArmTarget target = (right ? posture.rightWrist : posture.leftWrist).value_or(restingTarget(side));
     hand::ArmSolveOptions options;
-    if (previous) options.previousElbowDirection = (right ? previous->right : previous->left).elbowDirection;
+    options.previousElbowDirection = right ? posture.rightElbowHint : posture.leftElbowHint;
+    options.maxSwivelStepDeg = kElbowHintWindowDeg;
     return hand::solveArm(arm(side), target, options);
 }
 
-render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report, const PoseReport* previous) const {
+hand::GazePose SignerRig::solveGazeAt(const SignerPosture& posture) const {
+    if (!posture.gazeMm) return hand::GazePose{};
+    if (posture.headDeg) return hand::solveGazeWithHead(gaze_, *posture.gazeMm, posture.headDeg->x, posture.headDeg->y);
+    return hand::solveGaze(gaze_, *posture.gazeMm);
+}
+
+render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report) const {
     const render::Scene& scene = *scene_;
     PoseReport local;
     PoseReport& out = report ? *report : local;
@@ -405,7 +412,7 @@ render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report, c
     std::map<std::string, glm::quat> canonical;  // posed canonical world rotations
     for (hand::Side side : {hand::Side::Right, hand::Side::Left}) {
         const bool right = side == hand::Side::Right;
-        const hand::ArmPose arm = solveArm(side, posture, previous);
+        const hand::ArmPose arm = solveArm(side, posture);
         (right ? out.right : out.left) = arm;
 
         const std::string s = sideName(side);
@@ -425,7 +432,7 @@ render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report, c
             canonical[std::string(info[b].name)] = arm.hand * handPose.bodies[b].rotation;
     }
     if (posture.gazeMm) {
-        out.gaze = hand::solveGaze(gaze_, *posture.gazeMm);
+        out.gaze = solveGazeAt(posture);
         canonical["neck"] = out.gaze.neck;
         canonical["head"] = out.gaze.head;
         canonical["leftEye"] = out.gaze.head * out.gaze.eyes;

@@ -26,6 +26,8 @@
 #include "hand/hand_model.hpp"
 #include "renderer/scene.hpp"
 
+#include <glm/vec2.hpp>
+
 #include <array>
 #include <filesystem>
 #include <map>
@@ -86,7 +88,18 @@ struct SignerPosture {
     // Body frame. Absent: the hand rests in front of the waist (restingTarget()).
     std::optional<hand::ArmTarget> rightWrist, leftWrist;
     std::optional<glm::vec3> gazeMm;  // body frame; absent: straight ahead
+    // The head's yaw and pitch (degrees, hand::GazePose) while it follows the eyes toward
+    // gazeMm at its own pace; absent: where hand::solveGaze puts it for gazeMm.
+    std::optional<glm::vec2> headDeg;
+    // Where each elbow should be (hand::ArmPose::elbowDirection, body frame), blended from the
+    // elbows the clip's keys give: the arm solver looks for the swivel within
+    // kElbowHintWindowDeg of it, so the elbow moves smoothly between keys however the cost's
+    // basins shift. Absent: the solver's rule of the target alone.
+    std::optional<glm::vec3> rightElbowHint, leftElbowHint;
 };
+
+// [D] How far from a posture's elbow hint the arm solver may swing the elbow.
+inline constexpr float kElbowHintWindowDeg = 20.0f;
 
 struct PoseReport {
     hand::ArmPose right, left;
@@ -117,13 +130,14 @@ public:
     // viewer, fingers up (where fingerspelling happens).
     hand::ArmTarget presentingTarget(hand::Side side) const;
 
-    // The pose for one frame. Pass the previous frame's report for continuity (no elbow
-    // flips between neighbouring frames); `report` receives reach/limit information.
-    render::Pose pose(const SignerPosture& posture, PoseReport* report = nullptr,
-                      const PoseReport* previous = nullptr) const;
+    // The pose for one frame: a function of the posture alone (no previous frame; the elbows
+    // follow hand::solveArm's rule of the target). `report` receives reach/limit information.
+    render::Pose pose(const SignerPosture& posture, PoseReport* report = nullptr) const;
     // One arm's solution as pose() finds it (ArmPose of PoseReport), without posing the
     // skeleton: cheap enough to look ahead along a clip.
-    hand::ArmPose solveArm(hand::Side side, const SignerPosture& posture, const PoseReport* previous = nullptr) const;
+    hand::ArmPose solveArm(hand::Side side, const SignerPosture& posture) const;
+    // The head and eyes as pose() turns them (straight ahead without a gaze point).
+    hand::GazePose solveGazeAt(const SignerPosture& posture) const;
 
 private:
     struct Bone {

@@ -1,6 +1,6 @@
 #include "signer/timeline_clip.hpp"
 
-#include "signer/clearance.hpp"
+#include "signer/hand_capsules.hpp"
 #include "signer/signer_pose.hpp"
 
 #include <algorithm>
@@ -60,9 +60,7 @@ struct Gaps {
 };
 
 Gaps measure(const SignerRig& rig, const SignerPosture& posture, const PoseReport& arms) {
-    SignerCapsules capsules;
-    handCapsules(rig, hand::Side::Right, posture.rightHand, arms.right.wristMm, arms.right.hand, capsules.right);
-    handCapsules(rig, hand::Side::Left, posture.leftHand, arms.left.wristMm, arms.left.hand, capsules.left);
+    const SignerCapsules capsules = signerCapsules(rig, posture, arms);
     Gaps g;
     g.handsApproach = closestApproach(capsules.right, capsules.left);
     g.hands = g.handsApproach.gapMm;
@@ -83,48 +81,69 @@ glm::vec3 gazePointForReferent(const glm::dvec3& p) {
 
 glm::vec3 gazePointForViewer() { return glm::vec3(0.0f, static_cast<float>(kEyeHeightMm), 2000.0f); }
 
-TimelineClip::TimelineClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes, stimuli::Timeline timeline)
-    : rig_(&rig), shapes_(&shapes), timeline_(std::move(timeline)) {
-    for (const auto* track : {&timeline_.right, &timeline_.left})
-        for (const stimuli::TimelineKey& key : *track)
-            if (!key.rest) shapes.at(key.handshape);
+glm::vec3 gazePoint(const stimuli::GazeKey& key) {
+    return key.targetMm ? gazePointForReferent(*key.targetMm) : gazePointForViewer();
+}
+
+TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline) : rig_(&rig), timeline_(std::move(timeline)) {
     // Transitions: neighbouring keys that no item's own keys hold (both hands have keys at
-    // every transition's ends; the right track lists them). Routed in time order, following
-    // the arms frame by frame as they will be drawn, since a detour changes where the elbows
-    // are when the next transition starts.
+    // every transition's ends; the right track lists them). Each is routed on its own: the
+    // arms at any instant depend on the wrist targets alone.
     const auto insideItem = [&](double start, double end) {
         for (const stimuli::TimelineSpan& span : timeline_.spans)
             if (span.keysStartSeconds <= start && end <= span.keysEndSeconds) return true;
         return false;
     };
-    ArmChain chain;
-    std::uint64_t frame = 0;
+    // The elbows at the keys, by the solver's rule of the target alone: every instant between
+    // two keys looks for its elbow near their blend.
+    for (const hand::Side side : {hand::Side::Right, hand::Side::Left}) {
+        const bool right = side == hand::Side::Right;
+        for (const stimuli::TimelineKey& key : right ? timeline_.right : timeline_.left) {
+            const hand::ArmTarget target = key.rest ? rig_->restingTarget(side) : armTargetFromSigningSpace(key.pose);
+            (right ? rightElbows_ : leftElbows_).push_back(hand::solveArm(rig_->arm(side), target).elbowDirection);
+        }
+    }
+    // The head's turns, one after another (a minimum-jerk turn of angle A over T peaks at
+    // 1.875·A/T).
+    const std::vector<stimuli::GazeKey>& gaze = timeline_.gaze;
+    const auto headFor = [&](const stimuli::GazeKey& key) {
+        const hand::GazePose g = hand::solveGaze(rig_->gaze(), gazePoint(key));
+        return glm::vec2(g.headYawDeg, g.headPitchDeg);
+    };
+    if (!gaze.empty()) {
+        headStartDeg_ = headFor(gaze.front());
+        glm::vec2 head = headStartDeg_;
+        double free = gaze.front().timeSeconds;
+        for (std::size_t k = 1; k < gaze.size(); ++k) {
+            const glm::vec2 target = headFor(gaze[k]);
+            const double angle = glm::length(target - head);
+            if (angle < 1e-3) continue;
+            const double start = std::max(gaze[k - 1].timeSeconds, free);
+            const double duration =
+                std::max(gaze[k].timeSeconds - gaze[k - 1].timeSeconds, 1.875 * angle / kHeadPeakDegPerSecond);
+            headMoves_.push_back({start, duration, head, target});
+            head = target;
+            free = start + duration;
+        }
+    }
     const std::vector<stimuli::TimelineKey>& keys = timeline_.right;
     for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
         const double start = keys[k].timeSeconds, end = keys[k + 1].timeSeconds;
         if (end <= start || insideItem(start, end)) continue;
-        for (; static_cast<double>(frame) / kRoutingFramesPerSecond <= start; ++frame) {
-            const double t = static_cast<double>(frame) / kRoutingFramesPerSecond;
-            advance(chain, t, postureAt(t));
-        }
-        Detour detour = routeTransition(start, end, chain);
+        Detour detour = routeTransition(start, end);
         if (!detour.bumps.empty()) detours_.push_back(std::move(detour));
     }
 }
 
-PoseReport TimelineClip::advance(ArmChain& chain, double seconds, const SignerPosture& posture) const {
-    if (chain.previous && solveAfresh(chain.previousSeconds, seconds)) chain.previous.reset();
-    const PoseReport* previous = chain.previous ? &*chain.previous : nullptr;
+PoseReport TimelineClip::arms(const SignerPosture& posture) const {
     PoseReport report;
-    report.right = rig_->solveArm(hand::Side::Right, posture, previous);
-    report.left = rig_->solveArm(hand::Side::Left, posture, previous);
-    chain.previous = report;
-    chain.previousSeconds = seconds;
+    report.right = rig_->solveArm(hand::Side::Right, posture);
+    report.left = rig_->solveArm(hand::Side::Left, posture);
     return report;
 }
 
-TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double endSeconds, const ArmChain& chain) const {
-    // [D] The transition's frames are followed from where the arms are when it starts. Bumps
+TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double endSeconds) const {
+    // [D] The transition is followed on the grid of kRoutingFramesPerSecond. Bumps
     // are added one at a time, at most three, while they help: each shape and way aside —
     // apart along the line between the hands' closest points, to the sides, up, down,
     // forward — is tried at 40 mm per hand at its peak, then the three most promising at each
@@ -159,13 +178,12 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     // largest shortfall, given up on as soon as it exceeds `bound`.
     float handsNeeded = 0.0f, rightBodyNeeded = 0.0f, leftBodyNeeded = 0.0f;
     const auto follow = [&](const std::vector<Bump>& bumps, std::vector<Gaps>* gaps, float bound) {
-        ArmChain arms = chain;
         float worst = 0.0f;
         for (std::size_t j = 0; j < times.size(); ++j) {
             SignerPosture p = straight[j];
             p.rightWrist->wristMm += offsetAt(bumps, j, true);
             p.leftWrist->wristMm += offsetAt(bumps, j, false);
-            const Gaps g = measure(*rig_, p, advance(arms, times[j], p));
+            const Gaps g = measure(*rig_, p, arms(p));
             if (gaps) gaps->push_back(g);
             worst = std::max({worst, handsNeeded - g.hands, rightBodyNeeded - g.rightBody, leftBodyNeeded - g.leftBody});
             if (worst > bound) break;
@@ -175,8 +193,7 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     std::vector<Gaps> straightGaps;
     follow({}, &straightGaps, std::numeric_limits<float>::infinity());
     // Never closer than the clearance, or than the ends are (an item there touches).
-    ArmChain atStart = chain;
-    const Gaps first = measure(*rig_, from, advance(atStart, startSeconds, from));
+    const Gaps first = measure(*rig_, from, arms(from));
     const Gaps& last = straightGaps.back();
     handsNeeded = std::min({kTransitionClearanceMm, first.hands, last.hands});
     // A hand that does not move in the transition (resting) is not asked to clear the body.
@@ -235,13 +252,6 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     return detour;
 }
 
-bool TimelineClip::solveAfresh(double previousSeconds, double seconds) const {
-    for (const stimuli::TimelineSpan& span : timeline_.spans)
-        if (span.kind == stimuli::SpanKind::Verb && span.endSeconds >= previousSeconds && span.endSeconds < seconds)
-            return true;
-    return false;
-}
-
 SignerPosture TimelineClip::postureAt(double seconds) const {
     SignerPosture posture = straightPostureAt(seconds);
     for (const Detour& detour : detours_) {
@@ -263,29 +273,42 @@ SignerPosture TimelineClip::straightPostureAt(double seconds) const {
         const stimuli::TimelineSample sample = stimuli::sampleTrack(track, seconds);
         auto resolve = [&](const stimuli::TimelineKey& key) {
             if (key.rest) return Resolved{rig_->restingTarget(side), relaxedHand()};
-            return Resolved{armTargetFromSigningSpace(key.pose), shapes_->at(key.handshape).controls};
+            return Resolved{armTargetFromSigningSpace(key.pose), key.controls};
         };
         const Resolved from = resolve(*sample.from), to = resolve(*sample.to);
         const float blend = static_cast<float>(sample.blend);
         const hand::ArmTarget target = blendTargets(from.target, to.target, blend);
         const hand::HandControls controls = hand::interpolate(from.controls, to.controls, blend);
+        const std::vector<glm::vec3>& elbows = side == hand::Side::Right ? rightElbows_ : leftElbows_;
+        const glm::vec3 elbow = blendElbowHints(elbows[static_cast<std::size_t>(sample.from - track.data())],
+                                                elbows[static_cast<std::size_t>(sample.to - track.data())], blend);
         if (side == hand::Side::Right) {
             posture.rightWrist = target;
             posture.rightHand = controls;
+            posture.rightElbowHint = elbow;
         } else {
             posture.leftWrist = target;
             posture.leftHand = controls;
+            posture.leftElbowHint = elbow;
         }
     }
     const stimuli::GazeSample gaze = stimuli::sampleGaze(timeline_.gaze, seconds);
     if (gaze.from) {
-        auto point = [](const stimuli::GazeKey& key) {
-            return key.targetMm ? gazePointForReferent(*key.targetMm) : gazePointForViewer();
-        };
-        const glm::vec3 a = point(*gaze.from), b = point(*gaze.to);
+        const glm::vec3 a = gazePoint(*gaze.from), b = gazePoint(*gaze.to);
         posture.gazeMm = a + static_cast<float>(gaze.blend) * (b - a);
+        posture.headDeg = headAt(seconds);
     }
     return posture;
+}
+
+glm::vec2 TimelineClip::headAt(double seconds) const {
+    glm::vec2 head = headStartDeg_;
+    for (const HeadMove& move : headMoves_) {
+        if (seconds <= move.startSeconds) break;
+        const double u = (seconds - move.startSeconds) / move.durationSeconds;
+        head = move.fromDeg + static_cast<float>(stimuli::minimumJerk(u)) * (move.toDeg - move.fromDeg);
+    }
+    return head;
 }
 
 }  // namespace signstim::signer

@@ -4,17 +4,23 @@
 // resting place, relaxed; a keyed hand to its wrist target and handshape; gaze toward the
 // viewer or a referent.
 //
+// Gaze is eyes and head together: the eyes follow the timeline's gaze (quick, like a saccade);
+// the head follows with a minimum-jerk turn to where hand::solveGaze puts it for the new
+// target, no faster than kHeadPeakDegPerSecond at its peak and starting only when its previous
+// turn has ended, so its velocity is smooth in t; the eyes take up the difference within the
+// orbit's range. The head's turns depend on the gaze keys alone (the same in every version).
+//
 // Transitions are routed around the hands and the body. Between two items the timeline's
 // hands blend straight from one pose to the next (minimum jerk), and a straight blend knows
 // nothing of the hands' shape: fingers turning toward the resting place, or one hand passing
-// the other, would go through the other hand or the body. Where it would (signer/clearance.hpp
+// the other, would go through the other hand or the body. Where it would (signer/hand_capsules.hpp
 // geometry, on the wrist targets), the wrists take a detour: each moving hand is pushed aside
 // by an offset times a bump that is 0, with zero velocity and acceleration, at both ends of the
 // transition, so the keys and the smoothness of the profile are kept. The detour keeps the
 // hands at least kTransitionClearanceMm apart, or as close as they are at the transition's
 // ends when an item there has them touching. A detour depends only on the keys at its ends,
 // so frames outside the verb slots stay the same in every version.
-#include "signer/verb_render.hpp"
+#include "signer/clip.hpp"
 #include "stimuli/story/timeline.hpp"
 
 #include <optional>
@@ -24,13 +30,11 @@ namespace signstim::signer {
 
 class TimelineClip final : public Clip {
 public:
-    // Throws InputError when a key names a handshape the library lacks.
-    TimelineClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes, stimuli::Timeline timeline);
+    // The keys carry their hand controls (resolved by the timeline's builder).
+    TimelineClip(const SignerRig& rig, stimuli::Timeline timeline);
 
     double durationSeconds() const override { return timeline_.durationSeconds; }
     SignerPosture postureAt(double seconds) const override;
-    // Right after a verb slot ends: the frames that follow are shared by every version.
-    bool solveAfresh(double previousSeconds, double seconds) const override;
     const stimuli::Timeline& timeline() const { return timeline_; }
 
 private:
@@ -44,31 +48,43 @@ private:
         double startSeconds = 0.0, endSeconds = 0.0;
         std::vector<Bump> bumps;
     };
-    // The arms frame after frame, as ClipPoser solves them (the previous frame's elbows).
-    struct ArmChain {
-        std::optional<PoseReport> previous;
-        double previousSeconds = 0.0;
+    // The head's share of a gaze shift, moving at its own pace (timeline_clip.cpp): from `from`
+    // to `to` (yaw, pitch in degrees) with a minimum-jerk profile.
+    struct HeadMove {
+        double startSeconds = 0.0, durationSeconds = 0.0;
+        glm::vec2 fromDeg{0.0f}, toDeg{0.0f};
     };
     SignerPosture straightPostureAt(double seconds) const;
-    PoseReport advance(ArmChain& chain, double seconds, const SignerPosture& posture) const;
-    Detour routeTransition(double startSeconds, double endSeconds, const ArmChain& chain) const;
+    glm::vec2 headAt(double seconds) const;
+    PoseReport arms(const SignerPosture& posture) const;
+    Detour routeTransition(double startSeconds, double endSeconds) const;
 
     const SignerRig* rig_;
-    const stimuli::HandshapeLibrary* shapes_;
     stimuli::Timeline timeline_;
     std::vector<Detour> detours_;  // in time order
+    std::vector<glm::vec3> rightElbows_, leftElbows_;  // per key of each track: the solver's elbow there
+    glm::vec2 headStartDeg_{0.0f};
+    std::vector<HeadMove> headMoves_;  // in time order, one after the other
 };
 
 // [D] How far apart a transition keeps the hands (and each hand from the body).
 inline constexpr float kTransitionClearanceMm = 5.0f;
-// [D] Transitions are routed on the arms as drawn at this frame rate (the default output's);
-// at another rate the elbows, and so the hands where a wrist is at its limits, differ a little.
+// [D] A transition's clearance is checked at this many instants per second of the timeline (a
+// grid of the timeline's own time, not of any output's frames: the detour, like every pose,
+// depends on the timeline alone).
 inline constexpr double kRoutingFramesPerSecond = 30.0;
+
+// [S] Peak head angular speed in gaze shifts: up to ~300°/s for large shifts (Freedman &
+// Sparks 1997; Goossens & Van Opstal 1997). [D] Planned at 250°/s, so the yaw-pitch turn
+// stays under 300°/s.
+inline constexpr double kHeadPeakDegPerSecond = 250.0;
 
 // Where the eyes go for a referent at a signing-space point: toward it horizontally, a little
 // below eye level (a signer glances at the locus, not down at the chest), body frame.
 glm::vec3 gazePointForReferent(const glm::dvec3& signingSpaceMm);
 // Straight at the viewer (the camera), body frame.
 glm::vec3 gazePointForViewer();
+// Where a gaze key looks, body frame.
+glm::vec3 gazePoint(const stimuli::GazeKey& key);
 
 }  // namespace signstim::signer

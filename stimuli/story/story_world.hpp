@@ -5,7 +5,7 @@
 #include "stimuli/story/handshapes.hpp"
 #include "stimuli/story/lexicon.hpp"
 #include "stimuli/story/story.hpp"
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 #include "stimuli/verbs/verb_models.hpp"
 #include "stimuli/verbs/verbs.hpp"
 

@@ -1,4 +1,4 @@
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 
 #include "stimuli/verbs/signing_space.hpp"
 #include "stimuli/verbs/sora.hpp"
@@ -129,6 +129,10 @@ public:
         timeline_.durationSeconds = now_;
         if (version_ == VerbVersion::Animator && !missingAnimator_.empty()) throw missingAnimatorFiles();
         markPassThrough();
+        // The keys carry their handshapes' controls, so the signer needs no library of its own.
+        for (int h : {kRight, kLeft})
+            for (TimelineKey& k : track(h))
+                if (!k.rest) k.controls = sources_.shapes->at(k.handshape).controls;
         return std::move(timeline_);
     }
 

@@ -1,6 +1,6 @@
 // Reading a timeline: sampling it (the eases between keys, coarticulation), measuring its
 // timing, and writing it as JSON.
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 
 #include "stimuli/verbs/sora.hpp"
 

@@ -1,7 +1,7 @@
 #include "stimuli/story/timing.hpp"
 
 #include "common/number_format.hpp"
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 
 #include <functional>
 #include <vector>

@@ -5,11 +5,13 @@
 // them deeper than the items at its ends.
 #include "signer/clearance.hpp"
 #include "signer/timeline_clip.hpp"
-#include "signer/verb_render.hpp"
+#include "signer/clip.hpp"
+#include "signer/hand_capsules.hpp"
+#include "signer/signer.hpp"
 #include "stimuli/story/lexicon.hpp"
 #include "stimuli/verbs/sora.hpp"
 #include "stimuli/story/story.hpp"
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 #include "stimuli/verbs/verb_models.hpp"
 
 #include <gtest/gtest.h>
@@ -31,16 +33,17 @@ const std::vector<stimuli::VerbVersion> kVersions{stimuli::VerbVersion::Point, s
 // the handshapes, verbs, trained models and lexicon of scenes/.
 struct World {
     signer::Signer signer{kScenes};
+    stimuli::HandshapeLibrary shapes = stimuli::loadHandshapes(kScenes / "handshapes.json", signer.rig().handModel());
     stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(kScenes / "verbs.json");
     stimuli::TrainedVerbModels models = stimuli::loadVerbModels(kScenes / "models" / "verb_models.json", verbs);
-    stimuli::Lexicon lexicon = stimuli::loadLexicon(kScenes / "lexicon", signer.shapes(), signer.rig().handModel());
+    stimuli::Lexicon lexicon = stimuli::loadLexicon(kScenes / "lexicon", shapes, signer.rig().handModel());
 
     stimuli::TimelineSources sources() const {
         stimuli::TimelineSources s;
         s.lexicon = &lexicon;
-        s.shapes = &signer.shapes();
+        s.shapes = &shapes;
         s.verbs = [this](const std::string& verb, stimuli::VerbVersion version, double subject, double object, int, int) {
-            return stimuli::synthesizeVerb(stimuli::VerbSources{&verbs, &models, kScenes / "animator", &signer.shapes()},
+            return stimuli::synthesizeVerb(stimuli::VerbSources{&verbs, &models, kScenes / "animator", &shapes},
                                            verb, version, subject, object);
         };
         return s;
@@ -64,6 +67,7 @@ stimuli::TimelineKey key(double t, const glm::dvec3& positionMm, const glm::dvec
     k.pose.positionMm = positionMm;
     k.pose.orientation = stimuli::orientationFromFingersPalm(fingers, palm);
     k.handshape = shape;
+    k.controls = world().shapes.at(shape).controls;
     return k;
 }
 
@@ -76,7 +80,7 @@ TEST(Clearance, HandCapsulesFollowThePosedSkeleton) {
     const signer::SignerRig& rig = w.signer.rig();
     const render::Scene& scene = w.signer.avatar();
     signer::SignerPosture posture;
-    posture.rightHand = w.signer.shapes().at("X").controls;
+    posture.rightHand = w.shapes.at("X").controls;
     posture.leftHand = signer::relaxedHand();
     posture.rightWrist = hand::ArmTarget{{-60.0f, -50.0f, 300.0f}, glm::angleAxis(0.7f, glm::normalize(glm::vec3(1, 2, 3)))};
     posture.leftWrist = hand::ArmTarget{{120.0f, -80.0f, 260.0f}, glm::angleAxis(-1.1f, glm::normalize(glm::vec3(2, -1, 1)))};
@@ -162,7 +166,7 @@ TEST(Clearance, TransitionsDetourAroundTheOtherHandAndKeepTheirKeys) {
     timeline.spans = {{stimuli::SpanKind::Sign, 0.0, 0.4, "A", 0, 0, 0.0, 0.4, {}},
                       {stimuli::SpanKind::Sign, 0.4, 1.4, "B", 0, 1, 1.0, 1.4, {}}};
     timeline.gaze = {{0.0, std::nullopt}, {1.4, std::nullopt}};
-    const signer::TimelineClip clip(rig, w.signer.shapes(), timeline);
+    const signer::TimelineClip clip(rig, timeline);
 
     // The straight blend would go through the left hand.
     signer::SignerPosture straight = clip.postureAt(0.7);
@@ -199,7 +203,7 @@ TEST(Clearance, RoutedFramesOutsideTheVerbSlotsAreTheSameInEveryVersion) {
     const stimuli::Story story = w.story(kScenes / "stories" / "story-01.json");
     std::vector<signer::TimelineClip> clips;
     for (stimuli::VerbVersion v : kVersions)
-        clips.emplace_back(w.signer.rig(), w.signer.shapes(), stimuli::buildTimeline(story, v, w.sources()));
+        clips.emplace_back(w.signer.rig(), stimuli::buildTimeline(story, v, w.sources()));
     const stimuli::Timeline& first = clips.front().timeline();
     int compared = 0;
     for (int frame = 0; frame / 30.0 <= first.durationSeconds; ++frame) {
@@ -235,7 +239,7 @@ protected:
         const stimuli::Story parsed = w.story(kScenes / "stories" / name);
         std::vector<Checked> out;
         for (stimuli::VerbVersion v : kVersions) {
-            const signer::TimelineClip clip(w.signer.rig(), w.signer.shapes(), stimuli::buildTimeline(parsed, v, w.sources()));
+            const signer::TimelineClip clip(w.signer.rig(), stimuli::buildTimeline(parsed, v, w.sources()));
             const signer::ClearanceSummary summary =
                 signer::checkClearance(clip.timeline(), signer::clearanceFrames(w.signer.rig(), clip));
             // The closest approaches, for the record (ctest -V).

@@ -1,15 +1,15 @@
-// A story's versions rendered together (signer/verb_render.hpp, renderClipsSharingFrames): the
+// A story's versions rendered together (signer/clip_render.hpp, renderClipsSharingFrames): the
 // frames outside the verbs are drawn once for all versions, and every version still gets
 // exactly the images it would get rendered alone (validation layer on).
 #include "signer/avatar_builder.hpp"
 #include "signer/avatar_render.hpp"
 #include "signer/signer_pose.hpp"
 #include "signer/timeline_clip.hpp"
-#include "signer/verb_render.hpp"
+#include "signer/clip_render.hpp"
 #include "stimuli/story/handshapes.hpp"
 #include "stimuli/story/lexicon.hpp"
 #include "stimuli/story/story.hpp"
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 #include "stimuli/verbs/verb_models.hpp"
 #include "stimuli/verbs/verbs.hpp"
 
@@ -55,7 +55,7 @@ TEST(StudyRender, SharedFramesGiveEveryVersionTheImagesItGetsAlone) {
     std::vector<const signer::Clip*> pointers;
     for (auto version : {stimuli::VerbVersion::Point, stimuli::VerbVersion::Vector, stimuli::VerbVersion::Animator,
                          stimuli::VerbVersion::Uninflected}) {
-        clips.push_back(std::make_unique<signer::TimelineClip>(rig, shapes, stimuli::buildTimeline(story, version, sources)));
+        clips.push_back(std::make_unique<signer::TimelineClip>(rig, stimuli::buildTimeline(story, version, sources)));
         pointers.push_back(clips.back().get());
     }
 

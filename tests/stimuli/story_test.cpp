@@ -252,7 +252,7 @@ TEST(DefaultStories, TwelveStoriesUseEveryVerbInAtLeastThreeWithFourQuestionsEac
 }  // namespace
 }  // namespace signstim::stimuli
 
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 #include "stimuli/verbs/verb_models.hpp"
 
 namespace signstim::stimuli {

@@ -4,7 +4,7 @@
 // the legacy preset, and the `timing` object's errors.
 #include "stimuli/story/story_world.hpp"
 #include "stimuli/study/study.hpp"
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Timelines (stimuli/story/timeline.hpp): a story in each of the four versions differs only inside
 // the verb slots; the hands start and end at rest and move without jumps; fingerspelled
 // letters are held; gaze follows pointing and the verb's object.
-#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 
 #include "stimuli/verbs/signing_space.hpp"
 #include "stimuli/verbs/sora.hpp"

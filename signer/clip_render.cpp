@@ -1,120 +1,13 @@
-#include "signer/verb_render.hpp"
+#include "signer/clip_render.hpp"
 
 #include "signer/avatar_render.hpp"
-#include "common/error.hpp"
-#include "renderer/gltf_loader.hpp"
-
-#include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <deque>
+#include <stdexcept>
 
 namespace signstim::signer {
-namespace {
-
-double smoothstep(double u) {
-    u = std::clamp(u, 0.0, 1.0);
-    return u * u * (3.0 - 2.0 * u);
-}
-
-hand::Side toHandSide(stimuli::HandSide side) {
-    return side == stimuli::HandSide::Right ? hand::Side::Right : hand::Side::Left;
-}
-
-}  // namespace
-
-hand::HandControls relaxedHand() {
-    hand::HandControls controls;
-    const float bend[] = {0.12f, 0.16f, 0.2f, 0.24f}, hook[] = {0.2f, 0.25f, 0.3f, 0.35f};
-    for (int i = 0; i < 4; ++i) {
-        controls.fingers[i].bend = bend[i];
-        controls.fingers[i].hook = hook[i];
-    }
-    controls.thumb.bendDeg = 15.0f;
-    controls.thumb.spreadDeg = 25.0f;
-    controls.thumb.mcpDeg = 10.0f;
-    controls.thumb.ipDeg = 10.0f;
-    return controls;
-}
-
-hand::ArmTarget blendTargets(const hand::ArmTarget& a, const hand::ArmTarget& b, float t) {
-    hand::ArmTarget out;
-    out.wristMm = a.wristMm + t * (b.wristMm - a.wristMm);
-    out.handRotation = glm::slerp(a.handRotation, glm::dot(a.handRotation, b.handRotation) < 0.0f
-                                                      ? -b.handRotation
-                                                      : b.handRotation,
-                                  t);
-    return out;
-}
-
-Signer::Signer(const std::filesystem::path& scenesDir, const std::filesystem::path& avatarFile,
-               const BoneMapping& mapping)
-    : avatar_(loadSignerAvatar(avatarFile.empty() ? defaultAvatarPath(scenesDir) : avatarFile, mapping)),
-      rig_(avatar_, mapping),
-      shapes_(stimuli::loadHandshapes(scenesDir / "handshapes.json", rig_.handModel())) {}
-
-void StillCapturingSink::push(render::Image&& frame) {
-    if (count_++ == keep_) still_ = frame;
-    next_.push(std::move(frame));
-}
-
-hand::ArmTarget armTargetFromSigningSpace(const stimuli::HandPose& pose) {
-    hand::ArmTarget target;
-    target.wristMm = bodyFromSigningSpace(glm::vec3(pose.positionMm));
-    target.handRotation = handFrameFromSigningSpace(glm::quat(pose.orientation));
-    return target;
-}
-
-VerbClip::VerbClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes,
-                   stimuli::VerbPerformance performance, ClipTiming timing)
-    : rig_(&rig), shapes_(&shapes), performance_(std::move(performance)), timing_(timing) {
-    for (const stimuli::HandTrack& track : performance_.hands)
-        for (const stimuli::PerformanceKeyframe& key : track.keyframes) shapes.at(key.handshape);
-}
-
-double VerbClip::durationSeconds() const {
-    return timing_.leadInSeconds + performance_.durationSeconds + timing_.holdSeconds;
-}
-
-SignerPosture VerbClip::postureAt(double seconds) const {
-    SignerPosture posture;
-    posture.rightHand = posture.leftHand = relaxedHand();
-    const double verbTime = seconds - timing_.leadInSeconds;
-    // Lead-in: rise from rest with an ease-in-out, reaching the first keyframe as the verb begins.
-    const float rise =
-        timing_.leadInSeconds > 0.0 ? static_cast<float>(smoothstep(seconds / timing_.leadInSeconds)) : 1.0f;
-    for (const stimuli::HandTrack& track : performance_.hands) {
-        const hand::Side side = toHandSide(track.side);
-        const stimuli::HandSample sample = stimuli::sampleHand(track, std::max(0.0, verbTime));
-        hand::HandControls controls =
-            hand::interpolate(shapes_->at(sample.handshapeFrom).controls, shapes_->at(sample.handshapeTo).controls,
-                              static_cast<float>(sample.handshapeBlend));
-        hand::ArmTarget target = armTargetFromSigningSpace(sample.pose);
-        if (rise < 1.0f) target = blendTargets(rig_->restingTarget(side), target, rise);
-        if (side == hand::Side::Right) {
-            posture.rightHand = controls;
-            posture.rightWrist = target;
-        } else {
-            posture.leftHand = controls;
-            posture.leftWrist = target;
-        }
-    }
-    return posture;
-}
-
-render::Pose ClipPoser::next(double seconds, SignerPosture* posture, PoseReport* report) {
-    if (previous_ && clip_->solveAfresh(previousSeconds_, seconds)) previous_.reset();
-    const SignerPosture wanted = clip_->postureAt(seconds);
-    PoseReport solved;
-    render::Pose pose = rig_->pose(wanted, &solved, previous_ ? &*previous_ : nullptr);
-    previous_ = solved;
-    previousSeconds_ = seconds;
-    if (posture) *posture = wanted;
-    if (report) *report = solved;
-    return pose;
-}
 
 std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const render::Scene& avatar,
                           const SignerRig& rig, const std::vector<const Clip*>& clips,

@@ -1,0 +1,150 @@
+#pragma once
+// From a story to its timeline (stimuli/story/timeline.hpp) in one version: the timing rules
+// listed there, with the lexicon's signs, the handshape library and the verbs.
+#include "stimuli/story/handshapes.hpp"
+#include "stimuli/story/lexicon.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timing.hpp"
+#include "stimuli/verbs/verb_synthesis.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace signstim::stimuli {
+
+struct TimelineOptions {
+    // The defaults are the natural preset (docs/stories.md, "Timing"; SPEC §6.3);
+    // legacyTimelineOptions() gives the timing before issue 21, for comparison studies.
+    // [D] Every duration below is multiplied by 1 / rate.
+    double rate = 1.0;
+    double restSeconds = 0.5;  // at rest before the first and after the last sentence
+    // Sentence boundaries. Signers hold the last sign of a sentence a moment and go on from
+    // there; they return to rest at the end of a turn (SPEC §6.3, Grosjean & Lane 1977).
+    bool restBetweenSentences = false;  // legacy: back to rest between sentences ...
+    double sentencePauseSeconds = 0.3;  // ... for this long
+    // [R: SPEC §6.3, Huenerfauth 2008-09: pauses ~17 % of the total] The boundary holds are
+    // sized so that holds (boundary holds and HOLD items) make up `pauseShare` of the telling
+    // (0: every boundary hold is boundaryHoldSeconds), within the minimum and maximum [D: a
+    // hold of 150-400 ms reads as a boundary, a longer one as a stop].
+    double pauseShare = 0.17;
+    double boundaryHoldSeconds = 0.25;
+    double boundaryHoldMinimumSeconds = 0.15;
+    double boundaryHoldMaximumSeconds = 0.25;
+    double holdSeconds = 0.3;  // HOLD without a duration
+    // [R: Huenerfauth 2008-09, SPEC §6.3] The last sign before a sentence boundary is ~12 %
+    // longer; a sign or fingerspelled word already signed in the story is ~12 % shorter.
+    double boundaryLengthening = 1.12;
+    double repetitionShortening = 0.88;
+    // [D] Citation forms are longer than signs in connected signing (ASL-LEX 2.0's median
+    // SignDuration of a citation form is 834 ms; at 2-2.3 signs/s a sign and its transition
+    // take ~450 ms, the sign itself ~250-300 ms): the lexicon's keys (citation timing, a mean
+    // of 0.49 s) are scaled by this.
+    double signScale = 0.5;
+    // Transitions between items. Fitts-like (MacKenzie 1992's form of Fitts 1954):
+    // T = a + b·log2(1 + D/W), D the hands' largest displacement, W the target's tolerance:
+    // smaller where the next item touches the body or the other hand. [D] a = 0.04 s,
+    // b = 0.06 s/bit with W = 50 mm give 0.1 s for a 50 mm step, 0.21 s for 300 mm and
+    // 0.26 s for 600 mm (where the speed limit below takes over): the 100-250 ms transitions
+    // of fluent signing.
+    bool fittsTransitions = true;
+    double fittsInterceptSeconds = 0.04;
+    double fittsSecondsPerBit = 0.06;
+    double fittsWidthMm = 50.0;
+    double fittsContactWidthMm = 25.0;
+    // Legacy: transition time = base + distance / speed.
+    double transitionBaseSeconds = 0.12;
+    double transitionMmPerSecond = 1400.0;
+    double transitionMinimumSeconds = 0.1;
+    double transitionMaximumSeconds = 0.6;
+    // [D, SPEC §6.2: wrist ≤ 2.5 m/s] No keyed stretch is faster than this at its peak
+    // (1.875 × its mean speed under the easing, sampleTrack), the wrist's travel counted as
+    // the hand's displacement plus its swing as the hand turns: transitions, signs and verb
+    // paths are lengthened where they would be. Kept below 2.5 m/s for what the arm solution
+    // and the signer's detours add (measured: `story --check`). 0: no limit (legacy).
+    double peakSpeedMmPerSecond = 2300.0;
+    // Hands pass through the keys of a continuing movement (coarticulation; sampleTrack)
+    // instead of stopping at every key. Legacy: false.
+    bool coarticulation = true;
+    // In and out of a verb slot: 0: the Fitts time of the longest of the versions'
+    // displacements (the same in every version); legacy: a fixed 0.3 s.
+    double verbTransitionSeconds = 0.0;
+    double pointingSeconds = 0.1;  // [D] IX held on its referent (a brief stop in connected signing)
+    // [R: SPEC §6.3, Reed et al. 1990: 2-6 letters/s, fluent near the top; a new handshape
+    // at best every 150-200 ms] 0.12 s held + 0.08 s between: a new handshape every 0.2 s,
+    // 5.4-5.8 letters/s over a word. J and Z draw their strokes in proportion to the hold.
+    double letterSeconds = 0.12;
+    double letterTransitionSeconds = 0.08;
+    // Where fingerspelling happens: in front of the right shoulder, below the chin [D].
+    glm::dvec3 fingerspellingMm{150.0, 170.0, 230.0};
+    // IX: the hand goes this far from the origin toward the referent [D: in connected signing
+    // IX is a turn of the forearm in front of the chest toward the locus, not a reach of the
+    // arm from the shoulder; the legacy preset reaches 330 mm from the right shoulder joint].
+    glm::dvec3 pointingOriginMm{150.0, 50.0, 150.0};
+    double pointingReachMm = 150.0;
+    // ... but no nearer the chest than this (forward, z) where the hand is in front of it [D:
+    // the default signer's chest is ~110 mm deep; the fist needs the rest].
+    double pointingMinimumForwardMm = 200.0;
+};
+
+// The timing before issue 21: rest between sentences, no boundary or repetition rules,
+// citation-length signs, distance/speed transitions, fixed 0.3 s verb transitions, hands
+// stopping at every key, 5 letters in 1.4 s.
+TimelineOptions legacyTimelineOptions();
+// The options a story's or study's `timing` object asks for (stimuli/story/timing.hpp), at `rate`.
+TimelineOptions timelineOptionsFor(const StoryTiming& timing, double rate);
+
+// What a viewer sees of the timing (SPEC §6.3; `signstim story --check`). The telling runs
+// from the first key of the first sign to the last key of the last one (the rests at the two
+// ends and the moves to and from them excluded).
+struct TimelineMeasures {
+    double durationSeconds = 0.0, tellingSeconds = 0.0;
+    int signs = 0;  // lexical signs, names, IX, verbs and fingerspelled words, each once
+    int letters = 0;
+    double fingerspellingSeconds = 0.0;  // from each word's first letter to its last
+    double pauseSeconds = 0.0;           // Timeline::pauseSeconds
+    double signsPerSecond() const { return tellingSeconds > 0.0 ? signs / tellingSeconds : 0.0; }
+    double lettersPerSecond() const { return fingerspellingSeconds > 0.0 ? letters / fingerspellingSeconds : 0.0; }
+    double pauseShare() const { return tellingSeconds > 0.0 ? pauseSeconds / tellingSeconds : 0.0; }
+};
+TimelineMeasures measureTimeline(const Timeline& timeline);
+
+// Gives a verb instance in the requested version (point/vector need trained models,
+// animator its keyframe files): the same call stimuli::synthesizeVerb makes for `verb`.
+using VerbProvider = std::function<VerbPerformance(const std::string& verb, VerbVersion version, double subject,
+                                                   double object, int line, int column)>;
+
+struct TimelineSources {
+    const Lexicon* lexicon = nullptr;
+    const HandshapeLibrary* shapes = nullptr;
+    VerbProvider verbs;
+    // The versions whose slots must be equally long: all four for a study. `version` must be
+    // one of them.
+    std::vector<VerbVersion> slotVersions{VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator,
+                                          VerbVersion::Uninflected};
+};
+
+// What buildTimeline throws for the animator version when animator keyframe files are missing:
+// every one of them (`files()`), named at once; the location is the first verb that needs one.
+class MissingAnimatorFiles : public InputError {
+public:
+    MissingAnimatorFiles(const std::string& file, int line, int column, const std::string& message,
+                         std::vector<std::string> files)
+        : InputError(file, line, column, "", message), files_(std::move(files)) {}
+    const std::vector<std::string>& files() const { return files_; }
+
+private:
+    std::vector<std::string> files_;
+};
+
+// Throws InputError naming the story file, line and column for a sign missing from the
+// lexicon, a letter without a handshape, or a verb the provider cannot give. A missing
+// animator file (the provider's MissingAnimatorFile) is an error only for the animator
+// version (MissingAnimatorFiles, naming them all); the other versions size the animator slot
+// by the point model.
+Timeline buildTimeline(const Story& story, VerbVersion version, const TimelineSources& sources,
+                       const TimelineOptions& options = {});
+
+
+}  // namespace signstim::stimuli
