@@ -108,7 +108,14 @@ bool reportPace(const StoryWorld& world, const Story& story, const TimelineOptio
                 preset.c_str());
     std::vector<std::string> warnings;
     for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
-        const TimelineClip clip(signer.rig(), buildTimeline(story, v, world.sources(story), timing));
+        std::optional<Timeline> built;
+        try {
+            built = buildTimeline(story, v, world.sources(story), timing);
+        } catch (const MissingAnimatorFiles&) {
+            std::printf("  %s: not measured (keyframe files missing)\n", toString(v).c_str());
+            continue;
+        }
+        const TimelineClip clip(signer.rig(), std::move(*built));
         const StoryPace pace = measurePace(signer.rig(), clip);
         const TimelineMeasures& m = pace.measures;
         std::printf("  %s: %.2f s (telling %.2f s): %.2f signs/s (%d signs)", toString(v).c_str(), m.durationSeconds,

@@ -41,7 +41,13 @@ std::map<std::string, std::string> finalFiles(const fs::path& dir) {
             if (it->is_directory()) it.disable_recursion_pending();
             continue;
         }
-        if (it->is_regular_file()) files[it->path().lexically_relative(dir).string()] = readFile(it->path());
+        if (!it->is_regular_file()) continue;
+        const std::string path = it->path().lexically_relative(dir).string();
+        // A study folder's lock files (stimuli/study/study_folder_lock.hpp) are not outputs:
+        // they say which process last held them ("PID 1234 on host node07"), so their bytes
+        // differ from run to run by design. Their presence is still compared.
+        const bool lockFile = path == ".signstim/lock" || path == ".signstim/running";
+        files[path] = lockFile ? std::string("<lock file>") : readFile(it->path());
     }
     return files;
 }

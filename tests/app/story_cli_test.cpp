@@ -186,7 +186,7 @@ TEST(StoryCli, CheckReportsEachVersionsPaceAndPeakWristSpeedWithinTheLimit) {
     // docs/stories.md, "What story --check measures": per version, duration, signs/s, letters/s,
     // pause share, peak wrist and head speeds of the posed signer.
     for (const std::string& file : {kExample, fs::path(kScenes).append("stories/story-05.json").string()}) {
-        const auto r = runSignstim("story " + shellQuote(file) + " --check --scenes " + shellQuote(kScenes));
+        const auto r = runSignstim("story " + shellQuote(file) + " --check --timing natural --scenes " + shellQuote(kScenes));
         ASSERT_EQ(r.status, 0) << r.output;
         ASSERT_NE(r.output.find("timing (natural)"), std::string::npos) << r.output;
         int versions = 0;
@@ -227,7 +227,8 @@ TEST(StoryCli, CheckReportsEachVersionsPaceAndPeakWristSpeedWithinTheLimit) {
         if (at != std::string::npos && peak != std::string::npos) std::sscanf(output.c_str() + peak, "peak wrist %lf", &wrist);
         return wrist;
     };
-    const auto natural = runSignstim("story " + shellQuote(kExample) + " --check --scenes " + shellQuote(kScenes));
+    const auto natural =
+        runSignstim("story " + shellQuote(kExample) + " --check --timing natural --scenes " + shellQuote(kScenes));
     EXPECT_GT(peakOf(legacy.output), peakOf(natural.output)) << legacy.output << natural.output;
     const auto strict =
         runSignstim("story " + shellQuote(kExample) + " --check --strict --timing legacy --scenes " + shellQuote(kScenes));

@@ -33,7 +33,10 @@ Story storyFromText(const std::string& sentences, const std::string& timing = ""
 }
 
 Timeline build(const Story& story, VerbVersion v = VerbVersion::Point) {
-    return buildTimeline(story, v, world().sources(story), timelineOptionsFor(story.timing, 1.0));
+    // The natural preset (TimelineOptions' defaults; a story's own `timing` on top of it).
+    StoryTiming timing = story.timing;
+    if (!timing.given()) timing.preset = "natural";
+    return buildTimeline(story, v, world().sources(story), timelineOptionsFor(timing, 1.0));
 }
 
 std::string storyFile(int n) {
@@ -150,7 +153,7 @@ TEST(StoryTiming, ASignBeforeABoundaryIsTwelvePercentLongerAndARepeatedOneTwelve
     const Timeline twice = build(storyFromText(R"("MY MY HELP")"));
     EXPECT_NEAR(keysOf(twice, "MY", 1) / keysOf(twice, "MY", 0), 0.88, 1e-6);
     // Named parameters: the rules can be switched off from the story file.
-    const Timeline off = build(storyFromText(R"("HELP MY", "HELP")", R"({"boundaryLengthening": 1})"));
+    const Timeline off = build(storyFromText(R"("HELP MY", "HELP")", R"({"preset": "natural", "boundaryLengthening": 1})"));
     EXPECT_NEAR(keysOf(off, "MY", 0) / keysOf(mid, "MY", 0), 1.0, 1e-6);
 }
 
