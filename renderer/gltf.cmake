@@ -2,6 +2,8 @@
 target_sources(signstim_renderer PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/scene.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_validate.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_accessors.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_files.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_loader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/animation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/morph.cpp

@@ -1,6 +1,8 @@
-// glTF validation: container, JSON, structure, buffers and bufferViews; the bounds-checked
-// accessor reader conversion uses (gltf_validate.hpp).
+// glTF validation: container, JSON, structure, buffers and bufferViews (gltf_validate.hpp).
+// The accessor reader is in gltf_accessors.cpp, the files a model names in gltf_files.cpp.
 #include "renderer/gltf_validate.hpp"
+
+#include "renderer/gltf_files.hpp"
 
 #include "common/error.hpp"
 
@@ -10,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 
 namespace signstim::render {
@@ -24,62 +25,22 @@ std::string at(const std::string& array, std::size_t i) {
     return (array.rfind('/', 0) == 0 ? array : "/" + array) + "/" + std::to_string(i);
 }
 
-int componentCount(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return 1;
-        case TINYGLTF_TYPE_VEC2: return 2;
-        case TINYGLTF_TYPE_VEC3: return 3;
-        case TINYGLTF_TYPE_VEC4: return 4;
-        case TINYGLTF_TYPE_MAT2: return 4;
-        case TINYGLTF_TYPE_MAT3: return 9;
-        case TINYGLTF_TYPE_MAT4: return 16;
-        default: return 0;
-    }
-}
-
-const char* typeName(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-        case TINYGLTF_TYPE_VEC2: return "VEC2";
-        case TINYGLTF_TYPE_VEC3: return "VEC3";
-        case TINYGLTF_TYPE_VEC4: return "VEC4";
-        case TINYGLTF_TYPE_MAT2: return "MAT2";
-        case TINYGLTF_TYPE_MAT3: return "MAT3";
-        case TINYGLTF_TYPE_MAT4: return "MAT4";
-        default: return "?";
-    }
-}
-
 }  // namespace gltf_detail
 
 namespace {
 using gltf_detail::at;
-using gltf_detail::componentCount;
-using gltf_detail::typeName;
+using gltf_detail::checkInsideAllowedFolders;
+using gltf_detail::decodedUri;
+using gltf_detail::readGltfFile;
 
 constexpr std::uint32_t kGlbMagic = 0x46546C67;      // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;     // "JSON"
 constexpr std::uint32_t kChunkBin = 0x004E4942;      // "BIN\0"
-// Accessors without a bufferView (all zeros, maybe sparse) allocate `count` elements; a
-// count beyond this is treated as a broken file rather than an allocation request.
-constexpr std::uint64_t kMaxUnbackedCount = 1ull << 26;
 
 std::uint32_t readU32(const std::string& bytes, std::size_t offset) {
     std::uint32_t v = 0;
     std::memcpy(&v, bytes.data() + offset, 4);  // glb is little-endian, as is every target
     return v;
-}
-
-int componentSize(int componentType) {
-    switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-        case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-        default: return 0;
-    }
 }
 
 // Images inside bufferViews are decoded after validation (tinygltf would hand the decoder a
@@ -89,22 +50,6 @@ bool deferBufferViewImages(tinygltf::Image* image, const int index, std::string*
                            int size, void*) {
     if (image->bufferView >= 0) return true;
     return tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr);
-}
-
-// Reads the file `path` whole; `file` names it in errors.
-std::string readGltfFile(const fs::path& path, const std::string& file) {
-    auto fail = [&](const std::string& message) { throw InputError(file, 0, "", message); };
-    std::error_code ec;
-    const auto status = fs::status(path, ec);
-    if (ec || !fs::exists(status)) fail("file not found");
-    if (fs::is_directory(status)) fail("is a directory, expected a .gltf or .glb file");
-    if (!fs::is_regular_file(status)) fail("is not a regular file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail("cannot open for reading");
-    std::ostringstream content;
-    content << in.rdbuf();
-    if (!in && !in.eof()) fail("read error");
-    return content.str();
 }
 
 class Validator {
@@ -494,68 +439,13 @@ private:
         }
     }
 
-    // The file name tinygltf will open for `uri`: it percent-decodes exactly like this
-    // (dlib::urldecode: "%20" and "+" are spaces), so the checks below look at the same file.
-    static std::string decodedUri(const std::string& uri) {
-        auto hex = [](char c) {
-            if (c >= '0' && c <= '9') return c - '0';
-            if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-            if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-            return 0;
-        };
-        std::string decoded;
-        for (std::size_t i = 0; i < uri.size(); ++i) {
-            if (uri[i] == '+') {
-                decoded += ' ';
-            } else if (uri[i] == '%' && uri.size() > i + 2) {
-                decoded += static_cast<char>((hex(uri[i + 1]) << 4) | hex(uri[i + 2]));
-                i += 2;
-            } else {
-                decoded += uri[i];
-            }
-        }
-        return decoded;
-    }
-
-    // A model names its images and buffers relative to its own folder. One that names an
-    // absolute path, or climbs out of that folder ("../../../../etc/passwd"), would make
-    // rendering a downloaded model read any file the user can read: refused, unless the file
-    // lies in a folder the user allowed (GltfLoadOptions::allowedDirectories). Symbolic links
-    // are followed before comparing, so a link out of the folder counts as leaving it.
-    fs::path checkInsideAllowedFolders(const std::string& name, const std::string& uri, const std::string& field) {
-        const fs::path relative(name);
-        const std::string hint = options_.allowFlag.empty()
-                                     ? std::string()
-                                     : " (a folder elsewhere can be allowed with " + options_.allowFlag + " DIR)";
-        if (relative.is_absolute() || relative.has_root_name() || relative.has_root_directory())
-            fail(field, "'" + uri + "' is an absolute path; glTF files name their images and buffers relative to "
-                                    "the model's folder");
-        std::error_code ec;
-        const fs::path folder = fs::weakly_canonical(modelFolder(), ec);
-        const fs::path file = fs::weakly_canonical(folder / relative, ec);
-        auto inside = [&](const fs::path& directory) {
-            std::error_code error;
-            const fs::path base = fs::weakly_canonical(fs::absolute(directory), error);
-            const fs::path rest = file.lexically_relative(base);
-            return !error && !rest.empty() && *rest.begin() != ".." && rest != ".";
-        };
-        if (ec || !inside(folder)) {
-            bool allowed = false;
-            for (const fs::path& directory : options_.allowedDirectories) allowed = allowed || (!ec && inside(directory));
-            if (!allowed)
-                fail(field, "'" + uri + "' leads out of the model's folder " + folder.string() + " (to " +
-                                file.string() + "): refused" + hint);
-        }
-        return file;
-    }
-
     // External file named by a uri (relative to the glTF file). Returns its size; 0 for
     // data URIs.
     std::uint64_t checkExternalFile(const std::string& uri, const std::string& field) {
         if (uri.rfind("data:", 0) == 0) return 0;
         if (uri.find("://") != std::string::npos)
             fail(field, "remote resources are not supported: " + uri);
-        const fs::path file = checkInsideAllowedFolders(decodedUri(uri), uri, field);
+        const fs::path file = checkInsideAllowedFolders(decodedUri(uri), uri, field, modelFolder(), options_, file_);
         std::error_code ec;
         if (!fs::is_regular_file(file, ec))
             fail(field, "referenced file '" + file.string() + "' not found");
@@ -666,170 +556,7 @@ private:
     std::unique_ptr<tinygltf::Model> model_;
 };
 
-double readComponent(const std::uint8_t* p, int componentType, bool normalized) {
-    switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            std::int8_t v;
-            std::memcpy(&v, p, 1);
-            return normalized ? std::max(v / 127.0, -1.0) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-            std::uint8_t v;
-            std::memcpy(&v, p, 1);
-            return normalized ? v / 255.0 : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            std::int16_t v;
-            std::memcpy(&v, p, 2);
-            return normalized ? std::max(v / 32767.0, -1.0) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            std::uint16_t v;
-            std::memcpy(&v, p, 2);
-            return normalized ? v / 65535.0 : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-            std::uint32_t v;
-            std::memcpy(&v, p, 4);
-            return v;
-        }
-        default: {
-            float v;
-            std::memcpy(&v, p, 4);
-            return v;
-        }
-    }
-}
-
 }  // namespace
-
-// ---- the validated model: binary data, read through checked accessors ---------------------
-ValidatedGltf::ValidatedGltf(std::unique_ptr<tinygltf::Model> model, std::string fileName)
-    : model_(std::move(model)), fileName_(std::move(fileName)) {}
-ValidatedGltf::ValidatedGltf(ValidatedGltf&&) noexcept = default;
-ValidatedGltf& ValidatedGltf::operator=(ValidatedGltf&&) noexcept = default;
-ValidatedGltf::~ValidatedGltf() = default;
-
-void ValidatedGltf::fail(const std::string& field, const std::string& message, int line) const {
-    throw InputError(fileName_, line, field, message);
-}
-
-const std::uint8_t* ValidatedGltf::viewData(int viewIndex) const {
-    const tinygltf::BufferView& view = model_->bufferViews[static_cast<std::size_t>(viewIndex)];
-    return model_->buffers[static_cast<std::size_t>(view.buffer)].data.data() + view.byteOffset;
-}
-
-ValidatedGltf::ByteRange ValidatedGltf::checkAccessor(int index) const {
-    const tinygltf::Accessor& a = model_->accessors[static_cast<std::size_t>(index)];
-    const std::string f = at("accessors", static_cast<std::size_t>(index));
-    const int components = componentCount(a.type);
-    const int size = componentSize(a.componentType);
-    if (components == 0) fail(f + "/type", "unknown accessor type");
-    if (size == 0) fail(f + "/componentType", "unknown component type " + std::to_string(a.componentType));
-    if (a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
-                         a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-        fail(f + "/normalized", "only byte and short components may be normalized");
-    if (size < 4 && a.type >= TINYGLTF_TYPE_MAT2 && a.type <= TINYGLTF_TYPE_MAT4)
-        fail(f + "/componentType", "matrices of 8/16-bit components are not supported");
-    const std::uint64_t elementSize = static_cast<std::uint64_t>(components) * size;
-    const std::uint64_t count = a.count;
-    ByteRange range;
-    if (a.bufferView >= 0) {
-        const tinygltf::BufferView& view = model_->bufferViews[static_cast<std::size_t>(a.bufferView)];
-        const std::uint64_t stride = view.byteStride ? view.byteStride : elementSize;
-        if (stride < elementSize)
-            fail(f + "/bufferView", "/bufferViews/" + std::to_string(a.bufferView) + "/byteStride " +
-                                        std::to_string(stride) + " is smaller than one " +
-                                        typeName(a.type) + " element (" + std::to_string(elementSize) + " bytes)");
-        if (a.byteOffset % static_cast<std::size_t>(size) != 0)
-            fail(f + "/byteOffset", "must be a multiple of the component size");
-        // Last byte read: byteOffset + stride * (count - 1) + elementSize, overflow-safe.
-        const std::uint64_t viewLength = view.byteLength;
-        const bool fits = a.byteOffset <= viewLength && count - 1 <= (viewLength - a.byteOffset) / stride &&
-                          a.byteOffset + stride * (count - 1) + elementSize <= viewLength;
-        if (!fits)
-            fail(f + "/count", "count " + std::to_string(count) + " of " + typeName(a.type) +
-                                   " at byteOffset " + std::to_string(a.byteOffset) +
-                                   " reads past the end of /bufferViews/" + std::to_string(a.bufferView) +
-                                   " (" + std::to_string(viewLength) + " bytes)");
-        range.data = viewData(a.bufferView) + a.byteOffset;
-        range.stride = static_cast<std::size_t>(stride);
-    } else if (count > kMaxUnbackedCount) {
-        fail(f + "/count", "count " + std::to_string(count) + " without a bufferView is implausibly large");
-    }
-    if (a.sparse.isSparse) {
-        const std::string sf = f + "/sparse";
-        const std::uint64_t sparseCount = static_cast<std::uint64_t>(a.sparse.count);
-        if (a.sparse.count < 1 || sparseCount > count)
-            fail(sf + "/count", "must be in [1, accessor count " + std::to_string(count) + "]");
-        const int indexSize = componentSize(a.sparse.indices.componentType);
-        if (a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
-            a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_SHORT ||
-            a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || indexSize == 0)
-            fail(sf + "/indices/componentType", "must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
-        auto checkPart = [&](const char* part, int view, int offset, std::uint64_t bytesEach) {
-            const std::uint64_t length = model_->bufferViews[static_cast<std::size_t>(view)].byteLength;
-            if (offset < 0 || static_cast<std::uint64_t>(offset) > length ||
-                sparseCount > (length - static_cast<std::uint64_t>(offset)) / bytesEach)
-                fail(sf + "/" + part, std::to_string(sparseCount) + " entries at byteOffset " +
-                                          std::to_string(offset) + " read past the end of /bufferViews/" +
-                                          std::to_string(view) + " (" + std::to_string(length) + " bytes)");
-        };
-        checkPart("indices", a.sparse.indices.bufferView, a.sparse.indices.byteOffset,
-                  static_cast<std::uint64_t>(indexSize));
-        checkPart("values", a.sparse.values.bufferView, a.sparse.values.byteOffset, elementSize);
-    }
-    return range;
-}
-
-std::vector<double> ValidatedGltf::readAccessor(int index, std::initializer_list<int> types,
-                                                std::initializer_list<int> componentTypes,
-                                                const std::string& usedAs) const {
-    const tinygltf::Accessor& a = model_->accessors[static_cast<std::size_t>(index)];
-    const std::string f = at("accessors", static_cast<std::size_t>(index));
-    if (std::find(types.begin(), types.end(), a.type) == types.end()) {
-        std::string allowed;
-        for (int t : types) allowed += std::string(allowed.empty() ? "" : " or ") + typeName(t);
-        fail(f + "/type", std::string(typeName(a.type)) + " cannot be used as " + usedAs + " (needs " + allowed + ")");
-    }
-    if (componentTypes.size() &&
-        std::find(componentTypes.begin(), componentTypes.end(), a.componentType) == componentTypes.end())
-        fail(f + "/componentType", "component type " + std::to_string(a.componentType) +
-                                       " cannot be used as " + usedAs);
-    const ByteRange range = checkAccessor(index);
-    const int components = componentCount(a.type);
-    const int size = componentSize(a.componentType);
-    std::vector<double> values(a.count * static_cast<std::size_t>(components), 0.0);
-    auto readElement = [&](const std::uint8_t* p, std::size_t element) {
-        for (int c = 0; c < components; ++c)
-            values[element * components + c] = readComponent(p + c * size, a.componentType, a.normalized);
-    };
-    if (range.data)
-        for (std::size_t e = 0; e < a.count; ++e) readElement(range.data + e * range.stride, e);
-    if (a.sparse.isSparse) {
-        const std::uint8_t* indices = viewData(a.sparse.indices.bufferView) + a.sparse.indices.byteOffset;
-        const std::uint8_t* sparseValues = viewData(a.sparse.values.bufferView) + a.sparse.values.byteOffset;
-        const int indexSize = componentSize(a.sparse.indices.componentType);
-        std::uint64_t previous = 0;
-        for (int s = 0; s < a.sparse.count; ++s) {
-            const auto target = static_cast<std::uint64_t>(
-                readComponent(indices + static_cast<std::size_t>(s) * indexSize, a.sparse.indices.componentType, false));
-            if (target >= a.count)
-                fail(f + "/sparse/indices", "index " + std::to_string(target) + " out of range (count " +
-                                                std::to_string(a.count) + ")");
-            // glTF 2.0 §3.6.2.3: sparse indices MUST strictly increase.
-            if (s > 0 && target <= previous)
-                fail(f + "/sparse/indices", "index " + std::to_string(target) + " (entry " + std::to_string(s) +
-                                                ") does not increase strictly after " + std::to_string(previous));
-            previous = target;
-            readElement(sparseValues + static_cast<std::size_t>(s) * components * size, static_cast<std::size_t>(target));
-        }
-    }
-    for (std::size_t i = 0; i < values.size(); ++i)
-        if (!std::isfinite(values[i]))
-            fail(f, "element " + std::to_string(i / components) + " of " + usedAs + " is not finite (NaN or Inf)");
-    return values;
-}
 
 // ---- entry points ---------------------------------------------------------------------------
 ValidatedGltf validateGltf(const fs::path& path, const GltfLoadOptions& options, std::vector<std::string>* warnings) {

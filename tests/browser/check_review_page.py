@@ -31,14 +31,15 @@ import base64
 import os
 import pathlib
 import re
-import shutil
 import sys
 import threading
 import time
 import urllib.parse
 
-SKIP = 77
-INSTALL_HINT = "apt-get install chromium chromium-driver python3-selenium"
+sys.dont_write_bytecode = True  # importing chromium_session leaves no __pycache__ in the source tree
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from chromium_session import (INSTALL_HINT, SKIP, chromium_options, find_prerequisites,  # noqa: E402
+                              kill_tree, start_failure)
 
 # JavaScript run in the page. Each returns plain JSON values.
 COLLECT_REFERENCES_JS = r"""
@@ -121,47 +122,6 @@ def loud(lines):
     print(bar, file=sys.stderr)
 
 
-def find_program(explicit, environment, candidates):
-    if explicit:
-        return explicit if os.access(explicit, os.X_OK) else None
-    if os.environ.get(environment):
-        path = os.environ[environment]
-        return path if os.access(path, os.X_OK) else None
-    for candidate in candidates:
-        path = candidate if os.path.isabs(candidate) else shutil.which(candidate)
-        if path and os.access(path, os.X_OK):
-            return path
-    return None
-
-
-def descendants(pid):
-    """Process ids below `pid` (from /proc), deepest last."""
-    children = {}
-    for entry in os.listdir("/proc"):
-        if not entry.isdigit():
-            continue
-        try:
-            with open(f"/proc/{entry}/stat", "rb") as stat:
-                fields = stat.read().rsplit(b")", 1)[1].split()
-            children.setdefault(int(fields[1]), []).append(int(entry))
-        except (OSError, IndexError, ValueError):
-            continue
-    found, queue = [], [pid]
-    while queue:
-        for child in children.get(queue.pop(0), []):
-            found.append(child)
-            queue.append(child)
-    return found
-
-
-def kill_tree(pid):
-    for victim in [pid] + descendants(pid):
-        try:
-            os.kill(victim, 9)
-        except OSError:
-            pass
-
-
 class Checker:
     def __init__(self, folder, args):
         self.folder = folder
@@ -179,16 +139,7 @@ class Checker:
         from selenium import webdriver
         from selenium.webdriver.chrome.service import Service
 
-        options = webdriver.ChromeOptions()
-        options.binary_location = chromium
-        arguments = ["--headless=new", "--disable-gpu", "--autoplay-policy=no-user-gesture-required",
-                     f"--window-size={self.args.width},{self.args.height}", "--hide-scrollbars",
-                     "--disable-dev-shm-usage", "--no-first-run", "--mute-audio"]
-        if os.geteuid() == 0:
-            arguments.append("--no-sandbox")  # Chromium refuses to run as root with its sandbox
-        for argument in arguments:
-            options.add_argument(argument)
-        options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+        options = chromium_options(chromium, self.args.width, self.args.height)
         self.service = Service(chromedriver)
         self.driver = webdriver.Chrome(service=self.service, options=options)
         self.driver.set_page_load_timeout(60)
@@ -409,19 +360,7 @@ def main():
     parser.add_argument("--chromedriver", help="the driver (default: $CHROMEDRIVER, else chromedriver on PATH)")
     args = parser.parse_args()
 
-    missing = []
-    try:
-        import selenium  # noqa: F401  (only whether it is there)
-    except ImportError:
-        missing.append(f"the Python package selenium for {sys.executable} (Debian: python3-selenium; "
-                       "run this script with /usr/bin/python3)")
-    chromium = find_program(args.chromium, "CHROMIUM",
-                            ["/usr/bin/chromium", "chromium", "chromium-browser", "google-chrome"])
-    if not chromium:
-        missing.append("the browser chromium")
-    chromedriver = find_program(args.chromedriver, "CHROMEDRIVER", ["/usr/bin/chromedriver", "chromedriver"])
-    if not chromedriver:
-        missing.append("chromedriver (Debian: chromium-driver)")
+    chromium, chromedriver, missing = find_prerequisites(args)
     if missing:
         loud(["SKIPPED: the review-page browser check needs what is missing here:"]
              + [f"  - {m}" for m in missing] + [f"install with: {INSTALL_HINT}"])
@@ -453,9 +392,7 @@ def main():
         pid = checker.browser_pid()
         if pid:
             kill_tree(pid)
-        loud([f"SKIPPED: could not start {chromium} through {chromedriver}:",
-              "  " + str(error).strip().splitlines()[0] if str(error).strip() else "  (no message)",
-              "the browser and its driver must be the same version; install with: " + INSTALL_HINT])
+        loud(start_failure(chromium, chromedriver, error))
         return SKIP
 
     try:
