@@ -5,6 +5,7 @@
 #include "renderer/gltf_files.hpp"
 
 #include "common/error.hpp"
+#include "common/input_limits.hpp"
 
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
@@ -126,8 +127,17 @@ private:
         } else {
             jsonText_ = bytes_;
         }
+        // Depth first: a file of 10^5 nested arrays would otherwise be built, and torn down,
+        // by recursion (common/input_limits.hpp; docs/errors.md, "Limits").
+        struct TooDeep {};
         try {
-            root_ = json::parse(jsonText_);
+            root_ = json::parse(jsonText_, [](int depth, json::parse_event_t, json&) {
+                if (static_cast<std::size_t>(depth) > limits::kJsonDepth) throw TooDeep{};
+                return true;
+            });
+        } catch (const TooDeep&) {
+            fail("", "not a glTF file: arrays and objects nested more than " + std::to_string(limits::kJsonDepth) +
+                         " deep (docs/errors.md, \"Limits\")");
         } catch (const json::parse_error& e) {
             int line = 0;
             if (!isGlb_) {

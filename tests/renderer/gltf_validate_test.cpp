@@ -221,3 +221,15 @@ TEST(GltfValidate, NumberBeyondADoubleIsBadInputNamingItsLine) {
     EXPECT_NE(std::string(error.what()).find("'1e400'"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find("does not fit a double"), std::string::npos) << error.what();
 }
+
+// Issue 25 §10: 10^5 nested arrays (200 KB) are refused at the depth limit, before a deep
+// value is built (its recursive destruction alone would overflow the stack); 64 levels pass.
+TEST(GltfValidate, NestingBeyondTheDepthLimitIsBadInput) {
+    const auto nested = [](std::size_t depth) {
+        return "{\"asset\": {\"version\": \"2.0\"}, \"extras\": " + std::string(depth, '[') + std::string(depth, ']') + "}";
+    };
+    const InputError error = refusal([&] { validateGltfBytes(nested(100000), "deep.gltf", {}, {}); });
+    EXPECT_EQ(error.file(), "deep.gltf");
+    EXPECT_NE(std::string(error.what()).find("nested more than 64 deep"), std::string::npos) << error.what();
+    EXPECT_NO_THROW(validateGltfBytes(nested(60), "shallow.gltf", {}, {}));
+}
