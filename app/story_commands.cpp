@@ -56,6 +56,18 @@ VerbVersion requireVersion(const StoryOptions& o) {
 
 // `--check`: how close the signer's hands come, to each other and to the body, in each
 // version (signer/clearance.hpp), and where a rule is broken.
+// The version's timeline, or (saying so) none when it is the animator version and its keyframe
+// files are missing: --check reports the other versions and the list of missing files.
+std::optional<Timeline> timelineUnlessFilesMissing(const StoryWorld& world, const Story& story, VerbVersion v,
+                                                   const TimelineOptions& timing, const char* what) {
+    try {
+        return buildTimeline(story, v, world.sources(story), timing);
+    } catch (const MissingAnimatorFiles&) {
+        std::printf("  %s: not %s (keyframe files missing)\n", toString(v).c_str(), what);
+        return std::nullopt;
+    }
+}
+
 void reportClearance(const StoryWorld& world, const Story& story, const TimelineOptions& timing) {
     const Signer signer(world.scenes);
     const auto place = [](const Timeline& t, const ClearanceExtreme& e) {
@@ -67,13 +79,8 @@ void reportClearance(const StoryWorld& world, const Story& story, const Timeline
     std::printf("closest approach of the hands (mm; negative: they overlap), every frame at 30 fps:\n");
     std::vector<std::string> warnings;
     for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
-        std::optional<Timeline> built;
-        try {
-            built = buildTimeline(story, v, world.sources(story), timing);
-        } catch (const MissingAnimatorFiles&) {
-            std::printf("  %s: not checked (keyframe files missing)\n", toString(v).c_str());
-            continue;
-        }
+        std::optional<Timeline> built = timelineUnlessFilesMissing(world, story, v, timing, "checked");
+        if (!built) continue;
         const TimelineClip clip(signer.rig(), std::move(*built));
         const Timeline& t = clip.timeline();
         const ClearanceSummary summary = checkClearance(t, clearanceFrames(signer.rig(), clip));
@@ -108,13 +115,8 @@ bool reportPace(const StoryWorld& world, const Story& story, const TimelineOptio
                 preset.c_str());
     std::vector<std::string> warnings;
     for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
-        std::optional<Timeline> built;
-        try {
-            built = buildTimeline(story, v, world.sources(story), timing);
-        } catch (const MissingAnimatorFiles&) {
-            std::printf("  %s: not measured (keyframe files missing)\n", toString(v).c_str());
-            continue;
-        }
+        std::optional<Timeline> built = timelineUnlessFilesMissing(world, story, v, timing, "measured");
+        if (!built) continue;
         const TimelineClip clip(signer.rig(), std::move(*built));
         const StoryPace pace = measurePace(signer.rig(), clip);
         const TimelineMeasures& m = pace.measures;
