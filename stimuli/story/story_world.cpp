@@ -61,43 +61,52 @@ TimelineSources StoryWorld::sources(const Story& story) const {
     return s;
 }
 
-std::vector<std::string> StoryWorld::draftAnimatorFiles(const Story& story) const {
-    std::vector<std::string> drafts;
+namespace {
+
+// Each animator keyframe file the story's verb instances name that exists, once, in the order
+// the story first needs it: f(file, verb, subject, object, gloss).
+template <typename F>
+void forEachAnimatorFile(const StoryWorld& world, const Story& story, F&& f) {
+    std::vector<std::string> seen;
     for (const StorySentence& sentence : story.sentences)
         for (const StoryItem& item : sentence.items) {
             if (item.kind != StoryItemKind::Verb) continue;
-            const VerbDefinition& verb = verbs.get(item.gloss);
+            const VerbDefinition& verb = world.verbs.get(item.gloss);
             const double subject = item.subject >= 0 ? story.characters[static_cast<std::size_t>(item.subject)].position : 0.0;
             const double object = story.characters[static_cast<std::size_t>(item.object)].position;
-            const std::filesystem::path file = scenes / "animator" / animatorFileName(verb, subject, object);
-            if (!std::filesystem::exists(file)) continue;
-            if (loadAnimatorPerformance(file, verb, subject, object).draft &&
-                std::find(drafts.begin(), drafts.end(), file.string()) == drafts.end())
-                drafts.push_back(file.string());
+            const std::filesystem::path file = world.scenes / "animator" / animatorFileName(verb, subject, object);
+            if (!std::filesystem::exists(file) || std::find(seen.begin(), seen.end(), file.string()) != seen.end()) continue;
+            seen.push_back(file.string());
+            f(file, verb, subject, object, item.gloss);
         }
+}
+
+}  // namespace
+
+std::vector<std::string> StoryWorld::draftAnimatorFiles(const Story& story) const {
+    std::vector<std::string> drafts;
+    forEachAnimatorFile(*this, story,
+                        [&](const std::filesystem::path& file, const VerbDefinition& verb, double subject, double object,
+                            const std::string&) {
+                            if (loadAnimatorPerformance(file, verb, subject, object).draft) drafts.push_back(file.string());
+                        });
     return drafts;
 }
 
 std::vector<std::string> StoryWorld::copiedDraftNotes(const Story& story) const {
-    std::vector<std::string> notes, seen;
+    std::vector<std::string> notes;
     const VerbSources sources{&verbs, &models, scenes / "animator", &shapes};
-    for (const StorySentence& sentence : story.sentences)
-        for (const StoryItem& item : sentence.items) {
-            if (item.kind != StoryItemKind::Verb) continue;
-            const VerbDefinition& verb = verbs.get(item.gloss);
-            const double subject = item.subject >= 0 ? story.characters[static_cast<std::size_t>(item.subject)].position : 0.0;
-            const double object = story.characters[static_cast<std::size_t>(item.object)].position;
-            const std::filesystem::path file = scenes / "animator" / animatorFileName(verb, subject, object);
-            if (!std::filesystem::exists(file) || std::find(seen.begin(), seen.end(), file.string()) != seen.end()) continue;
-            seen.push_back(file.string());
-            const VerbPerformance animator = loadAnimatorPerformance(file, verb, subject, object);
-            if (animator.draft) continue;
-            if (sameKeyframes(animator, synthesizeVerb(sources, item.gloss, VerbVersion::Point, subject, object)))
-                notes.push_back(file.string() +
-                                ": its keyframes are the point model's output, but the file is not marked \"draft\": "
-                                "the animator version would show the point version; have an animator work on it, or "
-                                "mark it \"draft\": true");
-        }
+    forEachAnimatorFile(*this, story,
+                        [&](const std::filesystem::path& file, const VerbDefinition& verb, double subject, double object,
+                            const std::string& gloss) {
+                            const VerbPerformance animator = loadAnimatorPerformance(file, verb, subject, object);
+                            if (animator.draft) return;
+                            if (sameKeyframes(animator, synthesizeVerb(sources, gloss, VerbVersion::Point, subject, object)))
+                                notes.push_back(file.string() +
+                                                ": its keyframes are the point model's output, but the file is not "
+                                                "marked \"draft\": the animator version would show the point version; "
+                                                "have an animator work on it, or mark it \"draft\": true");
+                        });
     return notes;
 }
 
