@@ -65,6 +65,37 @@ struct TimelineSpan {
     int letters = 0;      // fingerspelled letters (fingerspelling and fingerspelled names)
 };
 
+// Non-manual channels (issue 23): the face, head, torso and shoulders as curves of time, the
+// same in every version of a story (non-manuals are not the experimental variable). A channel
+// is named by what it moves:
+//  - the face: ARKit-52 blendshape names ("browInnerUp", "browDownLeft", "eyeBlinkLeft",
+//    "eyeWideRight", "jawOpen", "mouthFunnel", "mouthPucker", "cheekPuff", ...), weight 0..1;
+//  - the head: "head.nod" (pitch, radians, + chin down), "head.shake" (yaw, radians, + toward
+//    the signer's left), "head.tilt" (roll, radians, + toward the signer's left shoulder),
+//    "head.jut" (mm forward, − back);
+//  - the torso: "torso.lean" (pitch, radians, + forward), "torso.turn" (yaw, radians, + toward
+//    the signer's left), "torso.shift" (mm toward the signer's left);
+//  - the shoulders: "shoulders.raise" (0..1, both), "shoulder.raiseLeft", "shoulder.raiseRight".
+// A channel a body cannot show is ignored by it (docs/nonmanuals.md: the name map).
+struct NonManualKey {
+    double timeSeconds = 0.0;
+    double value = 0.0;
+};
+struct NonManualTrack {
+    std::string channel;
+    std::vector<NonManualKey> keys;  // times increase; before the first and after the last: 0
+};
+// What was marked, for `story --json`, annotation tiers and messages: a span over signs
+// ("yn-question", "wh-question", "negation", "topic", "role-shift", "mouth:MM", "mouthing", ...)
+// or an event ("blink", "nod"), with its time including the ramps.
+struct NonManualSpan {
+    std::string marker;
+    double startSeconds = 0.0, endSeconds = 0.0;
+    int sentence = -1;
+    double intensity = 1.0;
+    std::string text;  // the mouthed word, the role-shift character; empty otherwise
+};
+
 struct Timeline {
     std::string story;         // the story's file, for messages
     std::string version;       // "point", ...
@@ -73,6 +104,8 @@ struct Timeline {
     std::vector<GazeKey> gaze;             // times increase
     std::vector<TimelineSpan> spans;       // in time order; verbs' spans are their slots
     double pauseSeconds = 0.0;             // held still: HOLD items, boundary holds, rests between sentences
+    std::vector<NonManualTrack> nonManuals;   // by channel, at most one track per channel
+    std::vector<NonManualSpan> nonManualSpans;  // in time order
 };
 
 // Minimum-jerk position profile s(u) = 10u³ − 15u⁴ + 6u⁵ for u in [0, 1] (clamped).
@@ -101,6 +134,13 @@ struct GazeSample {
     double blend = 0.0;
 };
 GazeSample sampleGaze(const std::vector<GazeKey>& gaze, double timeSeconds);
+
+// A non-manual channel's value at t: eased between keys by minimum jerk (every key a turning
+// point or a plateau), 0 before the first key and after the last. A pure function of the track
+// and t.
+double sampleNonManual(const NonManualTrack& track, double timeSeconds);
+// The track of a channel, or nullptr.
+const NonManualTrack* findNonManual(const Timeline& timeline, const std::string& channel);
 
 // The timeline as JSON (`signstim story FILE --version V --json`).
 std::string formatTimelineJson(const Timeline& timeline);

@@ -107,6 +107,25 @@ GazeSample sampleGaze(const std::vector<GazeKey>& gaze, double t) {
     return {&a, &b, span > 0.0 ? minimumJerk((t - a.timeSeconds) / span) : 1.0};
 }
 
+double sampleNonManual(const NonManualTrack& track, double t) {
+    const auto& keys = track.keys;
+    if (keys.empty() || t < keys.front().timeSeconds || t > keys.back().timeSeconds) return 0.0;
+    const auto next = std::upper_bound(keys.begin(), keys.end(), t,
+                                       [](double time, const NonManualKey& k) { return time < k.timeSeconds; });
+    if (next == keys.end()) return keys.back().value;
+    const NonManualKey& b = *next;
+    const NonManualKey& a = *(next - 1);
+    const double span = b.timeSeconds - a.timeSeconds;
+    const double u = span > 0.0 ? minimumJerk((t - a.timeSeconds) / span) : 1.0;
+    return a.value + (b.value - a.value) * u;
+}
+
+const NonManualTrack* findNonManual(const Timeline& timeline, const std::string& channel) {
+    for (const NonManualTrack& track : timeline.nonManuals)
+        if (track.channel == channel) return &track;
+    return nullptr;
+}
+
 TimelineMeasures measureTimeline(const Timeline& timeline) {
     TimelineMeasures m;
     m.durationSeconds = timeline.durationSeconds;

@@ -399,3 +399,26 @@ TEST(AnimatorDraft, ADraftIsThePointModelMarkedAndAnUnmarkedCopyIsRecognised) {
 
 }  // namespace
 }  // namespace signstim::stimuli
+
+// Issue 23: a non-manual channel is 0 outside its keys, passes through each key's value and
+// eases monotonically between two keys (minimum jerk), whatever the sampling instants.
+TEST(NonManualSampling, ZeroOutsideKeysExactAtKeysMonotoneBetween) {
+    signstim::stimuli::NonManualTrack track{"browInnerUp", {{1.0, 0.0}, {1.2, 0.8}, {2.0, 0.8}, {2.3, 0.0}}};
+    using signstim::stimuli::sampleNonManual;
+    EXPECT_EQ(sampleNonManual(track, 0.5), 0.0);
+    EXPECT_EQ(sampleNonManual(track, 2.31), 0.0);
+    EXPECT_DOUBLE_EQ(sampleNonManual(track, 1.2), 0.8);
+    EXPECT_DOUBLE_EQ(sampleNonManual(track, 1.6), 0.8);
+    EXPECT_DOUBLE_EQ(sampleNonManual(track, 2.0), 0.8);
+    double previous = 0.0;
+    for (double t = 1.0; t <= 1.2; t += 0.01) {
+        const double v = sampleNonManual(track, t);
+        EXPECT_GE(v, previous - 1e-12);
+        previous = v;
+    }
+    EXPECT_NEAR(sampleNonManual(track, 1.1), 0.4, 1e-12);  // minimum jerk is symmetric about u = 1/2
+    signstim::stimuli::Timeline timeline;
+    timeline.nonManuals.push_back(track);
+    ASSERT_NE(signstim::stimuli::findNonManual(timeline, "browInnerUp"), nullptr);
+    EXPECT_EQ(signstim::stimuli::findNonManual(timeline, "jawOpen"), nullptr);
+}
