@@ -46,6 +46,10 @@ packages=(
   # for the PNG's resolution chunk (analysis/figure_png.hpp).
   libfreetype-dev libfontconfig-dev fonts-dejavu-core zlib1g-dev
   ffmpeg
+  # Mouthing of English words (stimuli/story/mouthing.hpp, docs/mouthing.md): the phonemes of a
+  # word and when each is said, from espeak-ng, a maintained synthesizer, instead of a hand-made
+  # letter table; espeak-ng-data holds its dictionaries and voices, read at run time.
+  libespeak-ng-dev espeak-ng-data
   # OpenImageIO's CMake package (libopenimageio-dev) names its command-line tools as imported
   # targets and refuses to configure when /usr/bin/iconvert & co. are missing; they live in
   # openimageio-tools, which --no-install-recommends leaves out.
