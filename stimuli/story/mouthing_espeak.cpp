@@ -95,6 +95,9 @@ private:
             throw std::logic_error("espeak-ng is already loaded from " + loadedFolder_ + "; cannot load it from " +
                                    requested);
         }
+        // A named folder must hold the data itself: espeak-ng would quietly fall back to its own
+        // search when it does not.
+        if (!requested.empty()) requireDataFiles(dataFolderOf(requested));
         // Where espeak-ng will read from: its own search when no folder is named ($ESPEAK_DATA_PATH,
         // ~/espeak-ng-data, the compiled-in folder), read back through espeak_Info.
         espeak_ng_InitializePath(requested.empty() ? nullptr : requested.c_str());
