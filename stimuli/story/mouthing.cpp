@@ -168,8 +168,8 @@ struct TimedViseme {
 // How long each phoneme is said, relative to the others (the span sets the total): nominal ms
 // of the magnitudes espeak-ng 1.51 gives at its default rate of 175 words a minute (its phoneme
 // events for about 30 common words, looked at while writing this; docs/mouthing.md, "Timing"),
-// by class and stress. The events' own times are not used: they move by up to 10 ms with what
-// was said before (espeak-ng's wave generator keeps state), and the same word must give the
+// by class and stress. The events' own times are not used: they move by 1 ms to tens of ms with
+// what was said before (espeak-ng's wave generator keeps state), and the same word must give the
 // same tracks in every run.
 bool isVowel(const std::string& name) {
     return std::string_view("aAeEiIoOuU03V@").find(name[0]) != std::string_view::npos;

@@ -1,5 +1,5 @@
-// espeak-ng for mouthing (stimuli/story/mouthing.hpp): the phonemes of a word and when each is
-// said. espeak-ng keeps its state in globals and is not reentrant, so one process-wide engine
+// espeak-ng for mouthing (stimuli/story/mouthing.hpp): the phonemes of a word and their stress.
+// espeak-ng keeps its state in globals and is not reentrant, so one process-wide engine
 // loads it once and serialises every use behind a mutex.
 #include "stimuli/story/mouthing_espeak.hpp"
 
@@ -54,8 +54,8 @@ public:
         // espeak_TextToPhonemes: espeak-ng's own translation (dictionary and rules) of the text
         // into its phoneme names, "|" between phonemes, " " between words, a stress mark (' or ,)
         // before a stressed vowel. It synthesizes no sound, so it is the same whatever was said
-        // before (the phoneme events of a synthesis are not: their times move by up to 10 ms
-        // with the wave generator's state, measured with 1.51).
+        // before (the phoneme events of a synthesis are not: their times move by 1 ms to tens of
+        // ms with the wave generator's state, measured with 1.51; docs/mouthing.md, step 3).
         std::string phonemes;
         const void* next = text.c_str();
         while (next != nullptr) {

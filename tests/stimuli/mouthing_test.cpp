@@ -109,6 +109,22 @@ TEST(Mouthing, NoOpensTheJawAtItsVowel) {
     EXPECT_GT(atO, atN + 0.1);
 }
 
+TEST(Mouthing, FAndVTuckTheLowerLipAndThHasTheTongueOut) {
+    const Span span{0.0, 0.7};
+    const auto visemes = mouthingVisemes("father");
+    const auto tracks = mouthingTracks("father", span.start, span.end, 1.0);
+    ASSERT_EQ(visemes[0].viseme, "FF");
+    EXPECT_GE(valueAt(tracks, "mouthRollLower", centreOf(visemes, 0, span)), 0.6);
+    EXPECT_LT(valueAt(tracks, "mouthRollLower", centreOf(visemes, 1, span)), 0.2) << "released at the vowel";
+    int dentals = 0;
+    for (std::size_t i = 0; i < visemes.size(); ++i) {
+        if (visemes[i].viseme != "TH") continue;
+        ++dentals;
+        EXPECT_GT(valueAt(tracks, "tongueOut", centreOf(visemes, i, span)), 0.3);
+    }
+    EXPECT_EQ(dentals, 1);
+}
+
 TEST(Mouthing, LingualConsonantsTakeTheRoundingOfTheNextVowel) {
     // Cohen & Massaro's coarticulation: the lips of s give way to the vowel after it.
     const Span span{0.0, 0.6};
@@ -168,7 +184,7 @@ TEST(Mouthing, StretchingTheSpanStretchesTheTimingAlike) {
     ASSERT_EQ(shortClose->keys.size(), longClose->keys.size());
     for (std::size_t k = 0; k < shortClose->keys.size(); ++k)
         EXPECT_NEAR((longClose->keys[k].timeSeconds - 10.0) / 1.2, shortClose->keys[k].timeSeconds / 0.4, 1e-9);
-    // The second m begins where espeak-ng says it does, as a share of the word.
+    // The second m begins at its nominal share of the word (after the stressed vowel).
     const double share = visemes[2].startMs / visemes.back().endMs;
     EXPECT_GT(share, 0.3);
     EXPECT_LT(share, 0.8);
