@@ -109,8 +109,7 @@ public:
                 if (sentence.items[i].kind != StoryItemKind::Hold) lastSigned = i;
             for (std::size_t i = 0; i < sentence.items.size(); ++i) {
                 addItem(sentence.items[i], static_cast<int>(s), static_cast<int>(i), i == lastSigned);
-                // SPEC §6.4: the last sign of a yes/no question is held (nonmanuals.hpp); the hold
-                // belongs to the item (same sentence and item) so the marker spans it.
+                // SPEC §6.4: a y/n question's last sign held, as part of the item (nonmanuals.hpp).
                 if (const double held = markerHoldSeconds(sentence, static_cast<int>(i)); held > 0.0)
                     hold(held / options_.rate, timeline_.spans.back().label, static_cast<int>(s), static_cast<int>(i));
             }
@@ -139,8 +138,7 @@ public:
         for (int h : {kRight, kLeft})
             for (TimelineKey& k : track(h))
                 if (!k.rest) k.controls = sources_.shapes->at(k.handshape).controls;
-        // Issue 23: the face, head and torso from the markers and the blinks (the same in
-        // every version: they depend on the story and the spans' times only).
+        // Issue 23: face, head and torso from markers and blinks (the same in every version).
         if (options_.nonManuals && story_.nonManuals) addNonManuals(story_, options_.rate, timeline_);
         return std::move(timeline_);
     }
