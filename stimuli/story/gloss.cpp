@@ -217,9 +217,9 @@ GlossParse parseGloss(std::string_view sentence) {
             for (const GlossMarker& outer : open)
                 if (findMarkerByName(outer.name)->markerClass == definition.markerClass)
                     return fail(GlossError{marker.column, "[" + marker.written + "] overlaps [" + outer.written +
-                                                              "] (column " + std::to_string(outer.column) + "): one " +
+                                                              "], still open: one " +
                                                               std::string(toString(definition.markerClass)) +
-                                                              " at a time; close the first with ']' before"});
+                                                              " at a time; close it with ']' first"});
             open.push_back(std::move(marker));
             continue;
         }
