@@ -102,8 +102,8 @@ double eventTime(const Timeline& timeline, int sentence, int item, int items, do
     return 0.5 * (before.end + next.start);
 }
 
-void addBlink(Contributions& c, double t, double rate, double intensity) {
-    (void)rate;  // a blink is physiology, not signing: its length keeps at any rate
+// A blink is physiology, not signing: its length is the same at any rate.
+void addBlink(Contributions& c, double t, double intensity) {
     const std::vector<NonManualKey> keys{{t, 0.0}, {t + kBlinkCloseSeconds, intensity},
                                          {t + kBlinkCloseSeconds + kBlinkOpenSeconds, 0.0}};
     c["eyeBlinkLeft"].push_back(keys);
@@ -227,7 +227,7 @@ void addNonManuals(const Story& story, double rate, Timeline& timeline) {
             if (m.event()) {
                 const double t = eventTime(timeline, s, m.firstItem, items, lead);
                 if (m.marker == "blink") {
-                    addBlink(c, t, rate, std::min(1.0, k));
+                    addBlink(c, t, std::min(1.0, k));
                     anchors.push_back(t);
                     spans.push_back({"blink", t, t + kBlinkCloseSeconds + kBlinkOpenSeconds, s, k, ""});
                 } else {  // nod: chin down and back up once
@@ -309,11 +309,11 @@ void addNonManuals(const Story& story, double rate, Timeline& timeline) {
             return s.marker == "blink" && std::abs(s.startSeconds - t) < 1e-9;
         });
         if (written) continue;
-        addBlink(c, t, rate, 1.0);
+        addBlink(c, t, 1.0);
         spans.push_back({"blink", t, t + kBlinkCloseSeconds + kBlinkOpenSeconds, sentenceAt(timeline, t), 1.0, ""});
     }
     for (double t : natural) {
-        addBlink(c, t, rate, 1.0);
+        addBlink(c, t, 1.0);
         spans.push_back({"blink", t, t + kBlinkCloseSeconds + kBlinkOpenSeconds, sentenceAt(timeline, t), 1.0, ""});
     }
     for (const auto& [channel, parts] : c) {
