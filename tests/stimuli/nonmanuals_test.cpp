@@ -322,6 +322,35 @@ TEST(NonManualTiming, EachMouthMorphemeMovesItsMouthChannels) {
     }
 }
 
+TEST(NonManualTiming, EveryChannelIsAnArkitBlendshapeOrABodyChannelOfTheSeam) {
+    // Apple's ARKit-52 blendshape names and the seam's head/torso/shoulder channels
+    // (stimuli/story/timeline.hpp): the names a signer's body and a lab's avatar map.
+    const std::vector<std::string> known{
+        "browDownLeft", "browDownRight", "browInnerUp", "browOuterUpLeft", "browOuterUpRight", "cheekPuff",
+        "cheekSquintLeft", "cheekSquintRight", "eyeBlinkLeft", "eyeBlinkRight", "eyeLookDownLeft", "eyeLookDownRight",
+        "eyeLookInLeft", "eyeLookInRight", "eyeLookOutLeft", "eyeLookOutRight", "eyeLookUpLeft", "eyeLookUpRight",
+        "eyeSquintLeft", "eyeSquintRight", "eyeWideLeft", "eyeWideRight", "jawForward", "jawLeft", "jawOpen", "jawRight",
+        "mouthClose", "mouthDimpleLeft", "mouthDimpleRight", "mouthFrownLeft", "mouthFrownRight", "mouthFunnel",
+        "mouthLeft", "mouthLowerDownLeft", "mouthLowerDownRight", "mouthPressLeft", "mouthPressRight", "mouthPucker",
+        "mouthRight", "mouthRollLower", "mouthRollUpper", "mouthShrugLower", "mouthShrugUpper", "mouthSmileLeft",
+        "mouthSmileRight", "mouthStretchLeft", "mouthStretchRight", "mouthUpperUpLeft", "mouthUpperUpRight",
+        "noseSneerLeft", "noseSneerRight", "tongueOut", "head.nod", "head.shake", "head.tilt", "head.jut", "torso.lean",
+        "torso.turn", "torso.shift", "shoulders.raise", "shoulder.raiseLeft", "shoulder.raiseRight"};
+    std::string sentence = "\"JOHN IX(0.9) [nod]";
+    for (const MarkerDefinition& d : markerDefinitions()) {
+        if (d.markerClass == MarkerClass::Event) continue;
+        const std::string w(d.written);
+        sentence += " [" + (d.argument == MarkerArgument::Character ? w + "(MARY)" : d.argument == MarkerArgument::Word ? w + "(know)" : w) + " KNOW]";
+    }
+    const Timeline t = build(storyFromText(sentence + "\""));
+    EXPECT_GT(t.nonManuals.size(), 30u);
+    for (const NonManualTrack& track : t.nonManuals) {
+        EXPECT_NE(std::find(known.begin(), known.end(), track.channel), known.end()) << track.channel;
+        EXPECT_EQ(track.keys.front().value, 0.0) << track.channel;  // every channel rests at its ends
+        EXPECT_EQ(track.keys.back().value, 0.0) << track.channel;
+    }
+}
+
 // ---- same in every version; the switch -----------------------------------------------------
 
 TEST(NonManualVersions, ChannelsSpansAndGazeOutsideVerbsAreIdenticalInTheFourVersions) {
