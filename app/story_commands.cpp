@@ -11,6 +11,7 @@
 #include "signer/signer.hpp"
 #include "signer/timeline_clip.hpp"
 #include "stimuli/story/lexicon.hpp"
+#include "stimuli/story/nonmanuals.hpp"
 #include "stimuli/scenes_path.hpp"
 #include "stimuli/story/story.hpp"
 #include "stimuli/story/timeline_builder.hpp"
@@ -217,11 +218,13 @@ void registerStoryCommands(Commands& commands) {
         if (o->check) {
             double seconds = 0.0;
             int verbs = 0;
+            std::string nonManuals;  // issue 23: what the markers and blinks make (the same in every version)
             std::vector<std::string> missingAnimator;
             for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
                 try {
                     const Timeline t = buildTimeline(story, v, world.sources(story), timing);
                     seconds = t.durationSeconds;
+                    nonManuals = describeNonManuals(story, t);
                     verbs = 0;
                     for (const TimelineSpan& span : t.spans) verbs += span.kind == SpanKind::Verb;
                 } catch (const MissingAnimatorFiles& e) {
@@ -231,6 +234,7 @@ void registerStoryCommands(Commands& commands) {
             std::printf("%s: ok: \"%s\", %zu characters, %zu sentences, %d verbs, %zu questions, %.1f s in every version%s\n",
                         o->file.c_str(), story.title.c_str(), story.characters.size(), story.sentences.size(), verbs,
                         story.questions.size(), seconds, missingAnimator.empty() ? "" : " but animator");
+            if (!nonManuals.empty()) std::printf("%s\n", nonManuals.c_str());
             if (!missingAnimator.empty()) {
                 std::printf("warning: the animator version cannot be rendered: %zu keyframe file%s missing (point, vector "
                             "and uninflected do not need them); `signstim animator draft %s` writes starting files:\n",

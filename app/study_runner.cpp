@@ -160,8 +160,9 @@ std::vector<Timeline> unitTimelines(const LoadedStudy& s, const Story& story) {
     TimelineSources sources = s.world->sources(story);
     sources.slotVersions = studyVersions(s);
     // The study's `timing` replaces the story's own (stimuli/story/timing.hpp).
-    const TimelineOptions timing =
+    TimelineOptions timing =
         timelineOptionsFor(s.settings.timing.given() ? s.settings.timing : story.timing, s.settings.rate);
+    timing.nonManuals = s.settings.nonManuals;  // issue 23: the study's switch (the story's own holds too)
     std::vector<Timeline> timelines;
     for (VerbVersion v : studyVersions(s)) timelines.push_back(buildTimeline(story, v, sources, timing));
     return timelines;

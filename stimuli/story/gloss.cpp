@@ -1,10 +1,12 @@
 #include "stimuli/story/gloss.hpp"
 
 #include "common/input_limits.hpp"
+#include "stimuli/story/gloss_markers.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <variant>
 
 namespace signstim::stimuli {
 namespace {
@@ -174,36 +176,85 @@ std::optional<GlossError> parseToken(std::string_view token, std::size_t offset,
 
 GlossParse parseGloss(std::string_view sentence) {
     GlossParse result;
+    auto fail = [&](GlossError e) {
+        result.error = std::move(e);
+        return result;
+    };
+    std::vector<GlossMarker> open;  // markers opened and not yet closed, innermost last
     std::size_t at = 0;
     while (at < sentence.size()) {
         if (isSpace(sentence[at])) {
             ++at;
             continue;
         }
-        if (sentence[at] == '\n' || sentence[at] == '\r') {
-            result.error = GlossError{static_cast<int>(at) + 1, "a sentence is one line"};
-            return result;
+        if (sentence[at] == '\n' || sentence[at] == '\r') return fail(GlossError{static_cast<int>(at) + 1, "a sentence is one line"});
+        if (sentence[at] == '[') {
+            // A marker's head runs to the first space or ']' outside parentheses: "[rs(JOE, 0.5)".
+            const std::size_t start = at++;
+            int depth = 0;
+            while (at < sentence.size() && (depth > 0 || (!isSpace(sentence[at]) && sentence[at] != ']' && sentence[at] != '['))) {
+                if (sentence[at] == '(') ++depth;
+                if (sentence[at] == ')') --depth;
+                if (sentence[at] == '\n' || sentence[at] == '\r') break;
+                ++at;
+            }
+            auto parsed = parseMarkerHead(sentence.substr(start + 1, at - start - 1), start);
+            if (auto* bad = std::get_if<GlossError>(&parsed)) return fail(*bad);
+            GlossMarker marker = std::get<GlossMarker>(std::move(parsed));
+            marker.firstItem = static_cast<int>(result.items.size());
+            const MarkerDefinition& definition = *findMarkerByName(marker.name);
+            if (definition.markerClass == MarkerClass::Event) {
+                // An event stands between signs: [blink], [nod].
+                if (at >= sentence.size() || sentence[at] != ']')
+                    return fail(GlossError{marker.column, "[" + std::string(definition.written) +
+                                                              "] is a single event and covers no signs: write [" +
+                                                              std::string(definition.written) + "] between signs"});
+                ++at;
+                marker.lastItem = marker.firstItem - 1;
+                result.markers.push_back(std::move(marker));
+                continue;
+            }
+            for (const GlossMarker& outer : open)
+                if (findMarkerByName(outer.name)->markerClass == definition.markerClass)
+                    return fail(GlossError{marker.column, "[" + marker.written + "] overlaps [" + outer.written +
+                                                              "], still open: one " +
+                                                              std::string(toString(definition.markerClass)) +
+                                                              " at a time; close it with ']' first"});
+            open.push_back(std::move(marker));
+            continue;
         }
-        // A token runs to the next space outside parentheses: "ASK(JOHN, MARY)" is one item.
+        if (sentence[at] == ']') {
+            if (open.empty())
+                return fail(GlossError{static_cast<int>(at) + 1, "']' without '[': a marker is written [neg NOT KNOW]"});
+            GlossMarker marker = std::move(open.back());
+            open.pop_back();
+            marker.lastItem = static_cast<int>(result.items.size()) - 1;
+            if (marker.lastItem < marker.firstItem)
+                return fail(GlossError{marker.column, "[" + marker.written + "] marks no signs: [" + marker.written + " SIGN ...]"});
+            result.markers.push_back(std::move(marker));
+            ++at;
+            continue;
+        }
+        // A token runs to the next space, '[' or ']' outside parentheses: "ASK(JOHN, MARY)" is one item.
         const std::size_t start = at;
         int depth = 0;
-        while (at < sentence.size() && (depth > 0 || !isSpace(sentence[at]))) {
+        while (at < sentence.size() && (depth > 0 || (!isSpace(sentence[at]) && sentence[at] != ']' && sentence[at] != '['))) {
             if (sentence[at] == '(') ++depth;
             if (sentence[at] == ')') --depth;
-            if (depth < 0) {
-                result.error = GlossError{static_cast<int>(at) + 1, "')' without '('"};
-                return result;
-            }
+            if (depth < 0) return fail(GlossError{static_cast<int>(at) + 1, "')' without '('"});
             ++at;
         }
         GlossItem item;
-        if (auto bad = parseToken(sentence.substr(start, at - start), start, item)) {
-            result.error = bad;
-            return result;
-        }
+        if (auto bad = parseToken(sentence.substr(start, at - start), start, item)) return fail(*bad);
         result.items.push_back(std::move(item));
     }
-    if (result.items.empty()) result.error = GlossError{1, "empty sentence"};
+    if (!open.empty())
+        return fail(GlossError{open.back().column, "[" + open.back().written +
+                                                       " is not closed: a marker ends with ']' in its sentence"});
+    if (result.items.empty()) return fail(GlossError{1, "empty sentence"});
+    std::stable_sort(result.markers.begin(), result.markers.end(), [](const GlossMarker& a, const GlossMarker& b) {
+        return a.firstItem != b.firstItem ? a.firstItem < b.firstItem : a.column < b.column;
+    });
     return result;
 }
 

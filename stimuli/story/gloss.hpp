@@ -15,6 +15,14 @@
 //                                                    given in parentheses (SPEC §3.2)
 //   hold             HOLD  HOLD(0.5)                 the hands hold still (seconds)
 //
+// Non-manual markers (issue 23, docs/nonmanuals.md) bracket the signs they mark, as ASL gloss
+// writes a line over them with the marker's name:
+//   [y/n HELP]  [wh KEY WHERE]  [neg NOT KNOW]  [t MEETING]  [rs(JOE) [wh KEY WHERE]]
+//   [neg(0.5) NOT GO]   an intensity, 0.1 to 1.5 (1: the documented marker)
+//   [mouth(pizza) PIZZA]  mouthing of an English word;  [blink] [nod]  single events
+// Markers of one kind (gloss_markers.hpp, MarkerClass) do not overlap; a marker closes in its
+// sentence.
+//
 // This file only tokenizes and parses one sentence into items with their columns; what the
 // names mean (lexicon, characters, verbs) is checked by the story loader (stimuli/story/story.hpp).
 #include <optional>
@@ -45,6 +53,20 @@ struct GlossItem {
     int column = 0;                       // 1-based column of the item's first character
 };
 
+// A non-manual marker as written (gloss_markers.hpp has the vocabulary).
+struct GlossMarker {
+    std::string name;                 // canonical: "yn-question", "negation", "mouth:MM", "blink", ...
+    std::string written;              // as written: "y/n", "neg(0.5)"
+    std::optional<double> intensity;  // (0.5)
+    std::string argument;             // rs(JOE): "JOE"; mouth(pizza): "pizza"
+    int argumentColumn = 0;
+    // The items it covers, by index; an event has lastItem == firstItem - 1 and happens
+    // before item firstItem (after the last item when firstItem == items.size()).
+    int firstItem = 0, lastItem = -1;
+    int column = 0;  // 1-based column of its '['
+    bool event() const { return lastItem < firstItem; }
+};
+
 // A parse error at a column of the sentence (1-based), with what to change.
 struct GlossError {
     int column = 0;
@@ -54,6 +76,7 @@ struct GlossError {
 // Parses one sentence. Returns the items, or the first error.
 struct GlossParse {
     std::vector<GlossItem> items;
+    std::vector<GlossMarker> markers;  // by first item, then column
     std::optional<GlossError> error;
 };
 GlossParse parseGloss(std::string_view sentence);

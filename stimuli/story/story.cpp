@@ -2,6 +2,7 @@
 
 #include "common/input_limits.hpp"
 #include "stimuli/story/gloss.hpp"
+#include "stimuli/story/story_markers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,7 +107,7 @@ public:
     Story read() {
         const json& root = source_.root;
         if (!root.is_object()) fail(1, "", "a story file is a JSON object {\"format\": \"signstim-story\", ...}");
-        checkKnownKeys(root, {"format", "version", "title", "characters", "sentences", "questions", "notes", "timing"}, "");
+        checkKnownKeys(root, {"format", "version", "title", "characters", "sentences", "questions", "notes", "timing", "nonManuals"}, "");
         const std::string format = requiredString(root, "format", "");
         if (format != "signstim-story")
             fail(lineOfKey("", "format"), "/format", "expected \"signstim-story\", got \"" + format + "\"");
@@ -119,6 +120,11 @@ public:
         story_.title = requiredString(root, "title", "");
         if (root.contains("notes")) story_.notes = requiredString(root, "notes", "");
         if (root.contains("timing")) story_.timing = parseStoryTiming(source_, root["timing"], "/timing");
+        if (root.contains("nonManuals")) {
+            if (!root["nonManuals"].is_boolean())
+                fail(lineOfKey("", "nonManuals"), "/nonManuals", "expected true or false (false: no non-manuals; docs/nonmanuals.md)");
+            story_.nonManuals = root["nonManuals"].get<bool>();
+        }
         readCharacters(required(root, "characters", ""));
         readSentences(required(root, "sentences", ""));
         // A story for phase 1 has questions (the study requires them); the sentences of phase 2
@@ -398,6 +404,9 @@ private:
             sentence.items.push_back(std::move(item));
         }
         for (std::size_t index : verbItems) resolveVerb(sentence, index, field);
+        sentence.markers = resolveMarkers(parsed.markers, story_, line, [&](int withinSentence, const std::string& message) {
+            fail(line, field, message, column(withinSentence));
+        });
         story_.sentences.push_back(std::move(sentence));
     }
 

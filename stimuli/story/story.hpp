@@ -49,10 +49,23 @@ struct StoryItem {
     int line = 0, column = 0;          // where it is written
 };
 
+// A non-manual marker of a sentence (gloss_markers.hpp; docs/nonmanuals.md) with what it means
+// in this story.
+struct StoryMarker {
+    std::string marker;        // canonical: "yn-question", "negation", "mouth:MM", "blink", ...
+    int firstItem = 0, lastItem = -1;  // items covered; an event: lastItem < firstItem, before item firstItem
+    double intensity = 1.0;
+    int character = -1;        // role shift: the character turned toward
+    std::string word;          // mouthing: the English word
+    int line = 0, column = 0;  // where its '[' is written
+    bool event() const { return lastItem < firstItem; }
+};
+
 struct StorySentence {
     std::string gloss;  // as written
     std::vector<StoryItem> items;
     int line = 0;
+    std::vector<StoryMarker> markers{};  // by first item
 };
 
 struct StoryQuestion {
@@ -72,6 +85,10 @@ struct Story {
     std::vector<StoryQuestion> questions;
     std::string notes;
     StoryTiming timing;  // the `timing` object (natural when not given)
+    // `"nonManuals": false`: no face, head or torso movement from the markers or blinks (a
+    // matched set for a study of the face itself; docs/nonmanuals.md). The manual timing,
+    // the y/n question's held last sign included, is the same either way.
+    bool nonManuals = true;
 
     int characterIndex(std::string_view gloss) const;  // -1 when none
 };

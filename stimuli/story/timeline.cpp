@@ -1,5 +1,6 @@
 #include "stimuli/story/timeline_builder.hpp"
 
+#include "stimuli/story/nonmanuals.hpp"
 #include "stimuli/verbs/signing_space.hpp"
 #include "stimuli/verbs/sora.hpp"
 
@@ -106,8 +107,12 @@ public:
             std::size_t lastSigned = sentence.items.size();
             for (std::size_t i = 0; i < sentence.items.size(); ++i)
                 if (sentence.items[i].kind != StoryItemKind::Hold) lastSigned = i;
-            for (std::size_t i = 0; i < sentence.items.size(); ++i)
+            for (std::size_t i = 0; i < sentence.items.size(); ++i) {
                 addItem(sentence.items[i], static_cast<int>(s), static_cast<int>(i), i == lastSigned);
+                // SPEC §6.4: a y/n question's last sign held, as part of the item (nonmanuals.hpp).
+                if (const double held = markerHoldSeconds(sentence, static_cast<int>(i)); held > 0.0)
+                    hold(held / options_.rate, timeline_.spans.back().label, static_cast<int>(s), static_cast<int>(i));
+            }
             const bool last = s + 1 == story_.sentences.size();
             if (last || options_.restBetweenSentences) {
                 // Back to rest at the end (and, legacy, between sentences).
@@ -133,6 +138,8 @@ public:
         for (int h : {kRight, kLeft})
             for (TimelineKey& k : track(h))
                 if (!k.rest) k.controls = sources_.shapes->at(k.handshape).controls;
+        // Issue 23: face, head and torso from markers and blinks (the same in every version).
+        if (options_.nonManuals && story_.nonManuals) addNonManuals(story_, options_.rate, timeline_);
         return std::move(timeline_);
     }
 

@@ -86,6 +86,10 @@ struct TimelineOptions {
     // ... but no nearer the chest than this (forward, z) where the hand is in front of it [D:
     // the default signer's chest is ~110 mm deep; the fist needs the rest].
     double pointingMinimumForwardMm = 200.0;
+    // Issue 23: non-manual channels from the story's markers and blinks (docs/nonmanuals.md);
+    // false, or the story's or study's "nonManuals": false, leaves them out (the manual
+    // timing stays the same).
+    bool nonManuals = true;
 };
 
 // The timing before issue 21: rest between sentences, no boundary or repetition rules,

@@ -196,6 +196,22 @@ std::string formatTimelineJson(const Timeline& timeline) {
         gaze.push_back(j);
     }
     root["gaze"] = gaze;
+    // Issue 23 (docs/nonmanuals.md): the non-manual channels as keys [time, value] and the
+    // marked spans; the same in every version.
+    Json channels = Json::array();
+    for (const NonManualTrack& track : timeline.nonManuals) {
+        Json keys = Json::array();
+        for (const NonManualKey& k : track.keys) keys.push_back(Json::array({roundTo(k.timeSeconds, 1e4), roundTo(k.value, 1e4)}));
+        channels.push_back({{"channel", track.channel}, {"keys", keys}});
+    }
+    Json marked = Json::array();
+    for (const NonManualSpan& s : timeline.nonManualSpans) {
+        Json j{{"marker", s.marker}, {"sentence", s.sentence + 1}, {"start", roundTo(s.startSeconds, 1e4)},
+               {"end", roundTo(s.endSeconds, 1e4)}, {"intensity", roundTo(s.intensity, 1e4)}};
+        if (!s.text.empty()) j["text"] = s.text;
+        marked.push_back(j);
+    }
+    root["nonManuals"] = {{"channels", channels}, {"spans", marked}};
     return root.dump(2) + "\n";
 }
 

@@ -38,6 +38,7 @@ public:
         if (root.contains("likertScale")) readScale(root["likertScale"]);
         study_.render = readRender(member(root, "", "render"), "/render", StudyRenderSettings{});
         study_.quick.timing = study_.render.timing;
+        study_.quick.nonManuals = study_.render.nonManuals;
         if (root.contains("quick")) study_.quick = readRender(root["quick"], "/quick", study_.quick);
         if (root.contains("outputs")) {
             const json& outputs = root["outputs"];
@@ -206,7 +207,7 @@ private:
     StudyRenderSettings readRender(const json& object, const std::string& pointer, StudyRenderSettings settings) {
         if (!object.is_object())
             source_.failAt(pointer, "expected {\"size\": \"1280x720\", \"fps\": \"30\", \"msaa\": 4, \"rate\": 1}");
-        knownKeys(object, pointer, {"size", "fps", "msaa", "rate", "timing"});
+        knownKeys(object, pointer, {"size", "fps", "msaa", "rate", "timing", "nonManuals"});
         if (object.contains("size")) {
             const std::string at = pointer + "/size";
             const json& size = object["size"];
@@ -242,6 +243,11 @@ private:
         if (object.contains("rate"))
             settings.rate = source_.number(object["rate"], pointer + "/rate", NumberRange{0.1, 4.0, ""});
         if (object.contains("timing")) settings.timing = parseStoryTiming(source_, object["timing"], pointer + "/timing");
+        if (object.contains("nonManuals")) {
+            if (!object["nonManuals"].is_boolean())
+                source_.failAt(pointer + "/nonManuals", "expected true or false (false: no non-manuals; docs/study.md)");
+            settings.nonManuals = object["nonManuals"].get<bool>();
+        }
         return settings;
     }
 
@@ -270,7 +276,8 @@ std::string twoDigits(std::size_t number, std::size_t width = 2) {
 
 std::string StudyRenderSettings::text() const {
     return std::to_string(width) + "x" + std::to_string(height) + ", " + fps + " fps, MSAA " + std::to_string(msaa) +
-           ", rate " + formatNumber(rate) + (timing.given() ? ", timing " + describeTiming(timing) : std::string());
+           ", rate " + formatNumber(rate) + (timing.given() ? ", timing " + describeTiming(timing) : std::string()) +
+           (nonManuals ? std::string() : ", no non-manuals");
 }
 
 StudyDesignSpec StudyFile::designSpec() const {

@@ -42,6 +42,9 @@ struct StudyRenderSettings {
     double rate = 1.0;                         // signing rate (stimuli/story/timeline.hpp)
     // The timing model (stimuli/story/timing.hpp); when given, it replaces every story's own.
     StoryTiming timing;
+    // `"nonManuals": false`: no face, head or torso movement in any story (issue 23; a
+    // matched set for a study of the face itself, docs/study.md). A story's own false holds too.
+    bool nonManuals = true;
     std::string text() const;                  // "1280x720, 30 fps, MSAA 4, rate 1[, timing legacy]"
 };
 

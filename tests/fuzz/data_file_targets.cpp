@@ -162,6 +162,17 @@ SIGNSTIM_FUZZ_TARGET(gloss) {
         for (const GlossArgument& argument : item.arguments)
             if (argument.position) requireFinite(*argument.position, "position");
     }
+    // Non-manual markers (docs/nonmanuals.md): inside the sentence, over items that exist.
+    for (const GlossMarker& marker : parse.markers) {
+        if (marker.column < 1 || static_cast<std::size_t>(marker.column) > input.size())
+            fuzz::fail("a marker at column " + std::to_string(marker.column));
+        const int items = static_cast<int>(parse.items.size());
+        if (marker.firstItem < 0 || marker.firstItem > items || marker.lastItem >= items ||
+            (!marker.event() && marker.lastItem < marker.firstItem))
+            fuzz::fail("a marker over items " + std::to_string(marker.firstItem) + ".." + std::to_string(marker.lastItem));
+        if (marker.intensity && !(*marker.intensity >= 0.1 && *marker.intensity <= 1.5))
+            fuzz::fail("a marker's intensity outside 0.1 to 1.5");
+    }
 }
 
 SIGNSTIM_FUZZ_TARGET(story) {
