@@ -44,7 +44,10 @@ struct NotationPlace {
 };
 
 struct NotationContact {
-    std::string at;    // a place (NotationPlace::name) the hand reaches
+    // The place the hand reaches (default: the part's start place for an event at the stroke's
+    // start, else where the path goes), with its offset (where the surface is).
+    std::string at;
+    glm::dvec3 offsetMm{0.0};
     std::string by;    // the point of the acting hand that reaches it (a hand point name)
     double when = 1.0; // in the stroke: 0 its start, 1 its end (every repetition)
     int line = 0;
@@ -114,6 +117,7 @@ struct ContactEvent {
     int part = 0;
     int hand = 0;  // index into the sign's hands (0 right)
     std::string at, by;
+    glm::dvec3 offsetMm{0.0};
 };
 
 // What compiling gives: per hand, keyframes as the lexicon keeps them and which of them the

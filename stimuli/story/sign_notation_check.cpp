@@ -136,7 +136,9 @@ std::vector<AslLexCode> deriveAslLexCode(const SignNotation& n, const HandshapeL
         const bool oscillates = p.local == LocalMovement::Wiggle || p.local == LocalMovement::Twist ||
                                 p.local == LocalMovement::Nod || p.local == LocalMovement::Rub;
         c.repeated = p.repeat > 1 || (oscillates && p.localCount > 1) ? 1 : 0;
-        const auto [major, minor] = aslLexLocation(p.at.name, glm::length(p.at.offsetMm));
+        // ASL-LEX codes where the hand is at onset; a sign that touches, where it touches.
+        const auto [major, minor] = p.contacts.empty() ? aslLexLocation(p.at.name, glm::length(p.at.offsetMm))
+                                                       : aslLexLocation(p.contacts.front().at, glm::length(p.contacts.front().offsetMm));
         c.majorLocation = major;
         c.minorLocation = minor;
         c.contact = p.contacts.empty() ? 0 : 1;
@@ -208,19 +210,25 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         const CompiledNotation::Stroke& s = sign.strokes[i];
         const std::string part = n.parts.size() > 1 ? ", part " + std::to_string(i + 1) : "";
         // Handshape at the hold (the part's first key).
-        const Sampled held = sampleAt(right, s.startSeconds);
         const TimelineSample at = sampleTrack(right, s.startSeconds);
         const std::string label = labelOf(shapes, at.blend < 0.5 ? at.from->handshape : at.to->handshape);
         add("handshape at the hold" + part, label == derived[i].handshape, label);
-        // The nearest place to the touching point at the part's start.
-        const glm::dvec3 touch = handPointInSpace(held.pose, handPointMm(model, held.controls, hand::Side::Right, p.touch).value_or(glm::dvec3(0.0)));
+        // The nearest place to the touching point at the part's start (at its first contact).
+        double placeTime = s.startSeconds;
+        std::string touchName = p.touch;
+        for (const ContactEvent& e : sign.contactEvents)
+            if (e.part == static_cast<int>(i)) {
+                placeTime = e.timeSeconds, touchName = e.by;
+                break;
+            }
+        const glm::dvec3 touch = pointAt(right, placeTime, touchName, hand::Side::Right, model);
         std::string nearest;
         double best = 1e18;
         for (const auto& [name, point] : lexicon.locations)
             if (glm::distance(point, touch) < best) best = glm::distance(point, touch), nearest = name;
         if (n.hands == HandRelation::Base && !p.baseHandshape.empty())
             for (const char* name : {"hand:palm", "hand:back", "hand:heel", "hand:radial", "hand:ulnar", "hand:fingertips", "arm:wrist", "arm:forearm"}) {
-                const double d = glm::distance(otherHandPoint(s.startSeconds, name), touch);
+                const double d = glm::distance(otherHandPoint(placeTime, name), touch);
                 if (d < best) best = d, nearest = name;
             }
         const auto [major, minor] = aslLexLocation(nearest, best);
@@ -286,7 +294,8 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
     int index = 0;
     for (const ContactEvent& e : sign.contactEvents) {
         ++index;
-        const std::optional<glm::dvec3> target = placePoint(e.timeSeconds, e.at);
+        std::optional<glm::dvec3> target = placePoint(e.timeSeconds, e.at);
+        if (target) *target += e.offsetMm;
         const glm::dvec3 by = pointAt(tracks[static_cast<std::size_t>(e.hand)], e.timeSeconds, e.by, hand::Side::Right, model);
         const std::string name = "contact " + std::to_string(index) + " " + e.by + " at " + e.at;
         if (!target) {
@@ -300,8 +309,9 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         const ContactEvent &a = sign.contactEvents[k], &b = sign.contactEvents[k + 1];
         if (a.at != b.at || a.by != b.by || a.part != b.part || b.timeSeconds - a.timeSeconds < 1e-3) continue;
         const double t = 0.5 * (a.timeSeconds + b.timeSeconds);
-        const std::optional<glm::dvec3> target = placePoint(t, a.at);
+        std::optional<glm::dvec3> target = placePoint(t, a.at);
         if (!target) continue;
+        *target += a.offsetMm;
         const double gap = glm::distance(*target, pointAt(right, t, a.by, hand::Side::Right, model));
         add("apart between contacts " + std::to_string(k + 1) + " and " + std::to_string(k + 2), gap >= kApartMm,
             format("%.1f mm at ", gap) + format("%.3f s", t));

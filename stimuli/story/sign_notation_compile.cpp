@@ -20,8 +20,8 @@ constexpr double kPi = 3.14159265358979323846;
 // [D] Samples of a curved stroke: 12 a circle (30° turns, which the hand passes at cos² 30° =
 // 75 % of its chord speed, sampleTrack), 6 an arc, 12 a wavy path.
 constexpr int kCircleSamples = 12, kArcSamples = 6, kWavySamples = 12;
-// [D] An arc bulges by a fifth of its chord (at least 15 mm), a zigzag or wave by 15 %.
-constexpr double kArcBulge = 0.2, kArcMinimumBulgeMm = 15.0, kZigzagWidth = 0.15;
+// [D] An arc bulges by 15 % of its chord (at least 15 mm), a zigzag or wave by 15 %.
+constexpr double kArcBulge = 0.15, kArcMinimumBulgeMm = 15.0, kZigzagWidth = 0.15;
 // [D] A lifted return takes 60 % of the stroke's time and clears the surface by 30 % of the
 // stroke's length (at least 15 mm): the quick return of a tap (issue 22: "quick lifted return").
 constexpr double kLiftedReturnTime = 0.6, kLiftedHeight = 0.3, kLiftedMinimumMm = 15.0;
@@ -237,16 +237,22 @@ private:
         double now = t0;
         for (int r = 0; r < n; ++r) {
             addStroke(now, p.returns == RepeatReturn::Continue);
-            for (const NotationContact& c : p.contacts) out_.contacts.push_back({now + c.when * ts, part_, 0, c.at, c.by});
+            for (const NotationContact& c : p.contacts) out_.contacts.push_back({now + c.when * ts, part_, 0, c.at, c.by, c.offsetMm});
             now += ts;
             if (r + 1 == n) break;
             if (p.returns == RepeatReturn::Retrace || p.returns == RepeatReturn::Trill) {
                 for (std::size_t k = forth.size() - 1; k-- > 0;)
                     path.push_back({now + (1.0 - forth[k].u) * tr, forth[k].position, forth[k].u, forth[k].via});
             } else if (p.returns == RepeatReturn::Lifted) {
+                // The return bulges the lift's way across the stroke; a tap whose lift is along
+                // its own line goes straight back, quickly.
                 const glm::dvec3 a = forth.back().position, b = forth.front().position;
-                const double h = std::max(kLiftedMinimumMm, kLiftedHeight * glm::length(a - b));
-                path.push_back({now + 0.5 * tr, 0.5 * (a + b) + p.lift * h, 0.5, true});
+                const glm::dvec3 along = glm::length(a - b) > 1e-6 ? glm::normalize(a - b) : glm::dvec3(0.0);
+                const glm::dvec3 across = p.lift - glm::dot(p.lift, along) * along;
+                if (glm::length(across) > 0.3) {
+                    const double h = std::max(kLiftedMinimumMm, kLiftedHeight * glm::length(a - b));
+                    path.push_back({now + 0.5 * tr, 0.5 * (a + b) + glm::normalize(across) * h, 0.5, true});
+                }
                 path.push_back({now + tr, b, 0.0, false});
             }
             now += tr;

@@ -214,10 +214,9 @@ private:
             for (std::size_t i = 0; i < c.size(); ++i) {
                 const std::string cp = p + "/contact/" + std::to_string(i);
                 if (!c[i].is_object()) fail(cp, "a contact event is {\"at\": place, \"by\": hand point, \"when\": \"start\" | \"end\" | 0..1}");
-                only(c[i], cp, {"at", "by", "when"});
+                only(c[i], cp, {"at", "offset", "by", "when"});
                 NotationContact event;
                 event.line = source_.lineAt(cp);
-                event.at = place(c[i], cp, "at", "-").name;
                 event.by = text(c[i], cp, "by", out.touch);
                 if (c[i].contains("when")) {
                     const json& w = c[i]["when"];
@@ -226,6 +225,12 @@ private:
                     else if (w.is_number()) event.when = source_.number(w, cp + "/when", NumberRange{0.0, 1.0, ""});
                     else fail(cp + "/when", "expected \"start\", \"end\" or a fraction of the stroke 0..1");
                 }
+                const NotationPlace where = c[i].contains("at")                    ? place(c[i], cp, "at", "offset")
+                                            : event.when < 0.5 || !out.to.has_value() ? out.at
+                                                                                      : *out.to;
+                if (!c[i].contains("at") && c[i].contains("offset")) fail(cp + "/offset", "an offset goes with its \"at\"");
+                event.at = where.name;
+                event.offsetMm = where.offsetMm;
                 out.contacts.push_back(event);
             }
         }
