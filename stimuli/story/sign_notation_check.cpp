@@ -41,7 +41,10 @@ std::vector<TimelineKey> trackOf(const LexiconSign& sign, std::size_t h, const H
         key.pose = v.pose;
         key.handshape = v.handshape;
         key.controls = shapes.at(v.handshape).controls;
-        key.passThrough = h < sign.passThrough.size() && k < sign.passThrough[h].size() && sign.passThrough[h][k];
+        // As the timeline builder marks a sign's keys (coarticulation, timeline_builder.hpp):
+        // every inner key passed through, the geometry deciding where the hand stops
+        // (sampleTrack: a reversal or a hold stops it).
+        key.passThrough = k > 0 && k + 1 < sign.keyframes[h].size();
         track.push_back(key);
     }
     return track;
@@ -281,7 +284,7 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         double slowest = 1e18;
         int vias = 0;
         for (std::size_t k = 0; k < right.size(); ++k) {
-            if (!right[k].passThrough || right[k].timeSeconds < s.startSeconds || right[k].timeSeconds > s.endSeconds) continue;
+            if (sign.passThrough.empty() || !sign.passThrough[0][k] || right[k].timeSeconds < s.startSeconds || right[k].timeSeconds > s.endSeconds) continue;
             const double t = right[k].timeSeconds, dt = 1e-3;
             const double speed = glm::distance(sampleAt(right, t + dt).pose.positionMm, sampleAt(right, t - dt).pose.positionMm) / (2.0 * dt);
             slowest = std::min(slowest, speed);

@@ -360,10 +360,6 @@ private:
         for (std::size_t h = 0; h < sign->hands.size(); ++h) {
             const int slot = sign->hands[h] == HandSide::Right ? kRight : kLeft;
             segment.hands[slot] = expandPasses(sign->keyframes[h], sign->passes, rate);
-            // A sign in the notation says which of its keys the hand passes through (a curve's
-            // via points, a circle's), whatever the timing preset (sign_notation.hpp).
-            if (h < sign->passThrough.size() && sign->passThrough[h].size() == segment.hands[slot].size())
-                for (std::size_t k = 0; k < segment.hands[slot].size(); ++k) segment.hands[slot][k].passThrough = sign->passThrough[h][k];
             segment.durationSeconds = std::max(segment.durationSeconds, segment.hands[slot].back().timeSeconds);
         }
         limitSpeed(segment);
