@@ -41,18 +41,23 @@ constexpr double kRestSeconds = 0.3;
 // bar along their top, the others a grey one.
 class ContactSheetSink final : public render::FrameSink {
 public:
-    ContactSheetSink(double fps, double signStart, std::vector<double> contacts)
-        : fps_(fps), signStart_(signStart), contacts_(std::move(contacts)) {}
+    // Frames from `from` to `to` (clip seconds) are kept; the sign's own keys start at `signStart`.
+    ContactSheetSink(double fps, double from, double to, double signStart, std::vector<double> contacts)
+        : fps_(fps), from_(from), to_(to), signStart_(signStart), contacts_(std::move(contacts)) {}
 
     void push(render::Image&& frame) override {
-        const std::uint32_t w = frame.width / 2, h = frame.height / 2;
+        const double clipSeconds = static_cast<double>(pushed_++) / fps_;
+        if (clipSeconds < from_ - 1e-9 || clipSeconds > to_ + 1e-9) return;
+        // The signer's upper body: the middle 60 % across, the top 80 % (the hands' space), halved.
+        const std::uint32_t x0 = frame.width / 5, y0 = 0;
+        const std::uint32_t w = (frame.width * 3 / 5) / 2, h = (frame.height * 4 / 5) / 2;
         render::Image tile;
         tile.width = w;
         tile.height = h;
         tile.bytes.assign(static_cast<std::size_t>(w) * h * 4, 0);
         const std::size_t bpp = frame.bytesPerPixel();
         const auto channel = [&](std::uint32_t x, std::uint32_t y, int c) -> unsigned {
-            const std::size_t at = (static_cast<std::size_t>(y) * frame.width + x) * bpp;
+            const std::size_t at = (static_cast<std::size_t>(y + y0) * frame.width + x + x0) * bpp;
             return bpp == 4 ? frame.bytes[at + static_cast<std::size_t>(c)] : frame.bytes[at + 2 * static_cast<std::size_t>(c) + 1];
         };
         for (std::uint32_t y = 0; y < h; ++y)
@@ -61,7 +66,7 @@ public:
                     tile.bytes[(static_cast<std::size_t>(y) * w + x) * 4 + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(
                         (channel(2 * x, 2 * y, c) + channel(2 * x + 1, 2 * y, c) + channel(2 * x, 2 * y + 1, c) +
                          channel(2 * x + 1, 2 * y + 1, c) + 2) / 4);
-        const double t = static_cast<double>(tiles_.size()) / fps_ - signStart_;
+        const double t = clipSeconds - signStart_;
         bool contact = false;
         for (double c : contacts_) contact = contact || std::abs(c - t) <= 0.5 / fps_;
         const std::uint8_t bar[4] = {static_cast<std::uint8_t>(contact ? 220 : 150), static_cast<std::uint8_t>(contact ? 30 : 150),
@@ -72,7 +77,8 @@ public:
         tiles_.push_back(std::move(tile));
     }
     void finish() override {}
-    std::uint64_t framesPushed() const override { return tiles_.size(); }
+    std::uint64_t framesPushed() const override { return pushed_; }
+    std::size_t kept() const { return tiles_.size(); }
 
     render::Image sheet(int columns) const {
         render::Image out;
@@ -93,7 +99,8 @@ public:
     }
 
 private:
-    double fps_, signStart_;
+    double fps_, from_, to_, signStart_;
+    std::uint64_t pushed_ = 0;
     std::vector<double> contacts_;
     std::vector<render::Image> tiles_;
 };
@@ -142,9 +149,9 @@ void renderSign(const SignOptions& o, const StoryWorld& world, const LexiconSign
     timing.restSeconds = kRestSeconds;
     const signer::Signer signer(world.scenes);
     const signer::TimelineClip clip(signer.rig(), buildTimeline(story, VerbVersion::Point, world.sources(story), timing));
-    double start = 0.0;
+    double start = 0.0, from = 0.0, to = clip.durationSeconds();
     for (const TimelineSpan& span : clip.timeline().spans)
-        if (span.kind == SpanKind::Sign) start = span.keysStartSeconds;
+        if (span.kind == SpanKind::Sign) start = span.keysStartSeconds, from = span.startSeconds, to = span.keysEndSeconds + 0.1;
     if (output.kind == render::OutputKind::Video) {
         const std::uint64_t frames = renderClipToOutput(output, signer, clip, start);
         std::printf("%s: %s, %llu frames, %.2f s\n", output.out.string().c_str(), sign.gloss.c_str(),
@@ -159,12 +166,13 @@ void renderSign(const SignOptions& o, const StoryWorld& world, const LexiconSign
     options.framesPerSecond = output.frameRate.value();
     std::vector<double> contacts;
     for (const ContactEvent& e : sign.contactEvents) contacts.push_back(e.timeSeconds);
-    ContactSheetSink sink(options.framesPerSecond, start, contacts);
-    const std::uint64_t frames = signer::renderClips(renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink);
+    ContactSheetSink sink(options.framesPerSecond, from, to, start, contacts);
+    signer::renderClips(renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink);
+    const std::size_t frames = sink.kept();
     failOnValidationMessages(renderer);
     render::writeImage(sink.sheet(o.columns), output.out);
-    std::printf("%s: %s, contact sheet of %llu frames at %.0f fps, %d a row (red: a contact event)\n",
-                output.out.string().c_str(), sign.gloss.c_str(), static_cast<unsigned long long>(frames),
+    std::printf("%s: %s, contact sheet of %zu frames at %.0f fps from the move in to the end, %d a row (red: a contact event)\n",
+                output.out.string().c_str(), sign.gloss.c_str(), frames,
                 options.framesPerSecond, o.columns);
 }
 
