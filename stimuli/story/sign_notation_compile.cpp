@@ -164,7 +164,8 @@ private:
                 for (int k = 0; k <= corners + 1; ++k) {
                     const double u = static_cast<double>(k) / (corners + 1);
                     const double lateral = k == 0 || k == corners + 1 ? 0.0 : (k % 2 ? 1.0 : -1.0) * kZigzagWidth * length;
-                    s.push_back({u, start + u * chord + p.side * lateral, k > 0 && k <= corners});
+                    // Corners: the hand turns sharply there and nearly stops (not via points).
+                    s.push_back({u, start + u * chord + p.side * lateral, false});
                 }
                 break;
             }
