@@ -139,7 +139,11 @@ private:
         const double length = glm::length(chord);
         switch (p.path) {
             case PathShape::None:
-            case PathShape::Straight: s = {{0.0, start, false}, {1.0, end, false}}; break;
+            case PathShape::Straight:
+                s = {{0.0, start, false}, {1.0, end, false}};
+                // A flick snaps open early: a key where it is open (passed through).
+                if (p.local == LocalMovement::Flick) s.insert(s.begin() + 1, {kFlickShare, start + kFlickShare * chord, length > 0.0});
+                break;
             case PathShape::Arc: {
                 const double bulge = std::max(kArcMinimumBulgeMm, kArcBulge * length);
                 for (int k = 0; k <= kArcSamples; ++k) {
@@ -315,7 +319,7 @@ private:
     // The handshape at u of a stroke: a flick snaps open early, other changes at the end.
     static std::string handshapeAt(const NotationPart& p, double u) {
         if (p.endHandshape == p.handshape) return p.handshape;
-        if (p.local == LocalMovement::Flick) return u > 0.0 ? p.endHandshape : p.handshape;
+        if (p.local == LocalMovement::Flick) return u >= kFlickShare - 1e-9 ? p.endHandshape : p.handshape;
         return u >= 1.0 - 1e-9 ? p.endHandshape : p.handshape;
     }
 
