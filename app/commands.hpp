@@ -18,6 +18,7 @@ void registerVerbCommands(Commands& commands);    // train, verb, evaluate
 void registerAvatarCommands(Commands& commands);  // avatar build, handshapes, pose
 void registerDemoCommand(Commands& commands);     // demo (the main job until the study exists)
 void registerStoryCommands(Commands& commands);   // story (check, timeline, render)
+void registerSignCommand(Commands& commands);     // sign (one lexicon sign: its code, checks, render)
 void registerStudyCommands(Commands& commands);   // study (render, check, verify, merge), bench study
 void registerAnalysisCommands(Commands& commands);  // analyze, simulate-results
 

@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
     app::registerAvatarCommands(commands);
     app::registerVerbCommands(commands);
     app::registerStoryCommands(commands);
+    app::registerSignCommand(commands);
     app::registerStudyCommands(commands);
     app::registerAnalysisCommands(commands);
     app::requirePlainNumbers(root);

@@ -101,22 +101,26 @@ public:
                                  std::to_string(origin->second.line) + ")");
             for (const auto& [key, value] : item.items())
                 if (key != "gloss" && key != "meaning" && key != "hands" && key != "passes" && key != "keyframes" &&
-                    key != "notes" && key != "contact")
+                    key != "notes" && key != "contact" && key != "notation")
                     source_.fail(anchors, pointer + "/" + key,
-                                 "unknown field '" + key + "' (known: gloss, meaning, hands, passes, contact, keyframes, notes)");
+                                 "unknown field '" + key + "' (known: gloss, meaning, hands, passes, contact, keyframes, notation, notes)");
             sign.meaning = item.value("meaning", "");
-            sign.contact = readSignContact(source_, item, anchors, pointer);
-            readHands(item, sign, anchors, pointer);
-            if (item.contains("passes")) {
-                if (!item["passes"].is_number_integer() || item["passes"].get<long long>() < 1 || item["passes"].get<long long>() > 8)
-                    source_.fail(anchors, pointer + "/passes", "expected a whole number of passes, 1 to 8");
-                sign.passes = item["passes"].get<int>();
+            if (item.contains("notation")) {
+                readNotation(item, sign, pointer);
+            } else {
+                sign.contact = readSignContact(source_, item, anchors, pointer);
+                readHands(item, sign, anchors, pointer);
+                if (item.contains("passes")) {
+                    if (!item["passes"].is_number_integer() || item["passes"].get<long long>() < 1 || item["passes"].get<long long>() > 8)
+                        source_.fail(anchors, pointer + "/passes", "expected a whole number of passes, 1 to 8");
+                    sign.passes = item["passes"].get<int>();
+                }
+                const json& keyframes = item.contains("keyframes") ? item["keyframes"] : json();
+                if (!keyframes.is_object()) source_.fail(anchors, pointer + "/keyframes", "expected {\"right\": [...], \"left\": [...]}");
+                for (HandSide side : sign.hands) readTrack(keyframes, side, sign, anchors, pointer);
+                if (sign.durationSeconds() * sign.passes > kMaximumSignSeconds)
+                    source_.fail(anchors, pointer + "/keyframes", "a sign lasting over 10 s is a typo in a time");
             }
-            const json& keyframes = item.contains("keyframes") ? item["keyframes"] : json();
-            if (!keyframes.is_object()) source_.fail(anchors, pointer + "/keyframes", "expected {\"right\": [...], \"left\": [...]}");
-            for (HandSide side : sign.hands) readTrack(keyframes, side, sign, anchors, pointer);
-            if (sign.durationSeconds() * sign.passes > kMaximumSignSeconds)
-                source_.fail(anchors, pointer + "/keyframes", "a sign lasting over 10 s is a typo in a time");
             sign.file = source_.file;
             if (overrides) {
                 // The lab's sign takes the default one's place (and its place in the list).
@@ -133,6 +137,27 @@ public:
     }
 
 private:
+    // A sign in the notation (sign_notation.hpp): compiled to keyframes; its hands, contact and
+    // timing come from the description, not from fields of their own.
+    void readNotation(const json& item, LexiconSign& sign, const std::string& pointer) {
+        for (const char* key : {"hands", "passes", "contact", "keyframes"})
+            if (item.contains(key))
+                source_.failAt(pointer + "/" + key, std::string("a sign written in the notation derives \"") + key +
+                                                        "\" from it; give either \"notation\" or keyframes");
+        auto notation = std::make_shared<SignNotation>(readSignNotation(source_, pointer, shapes_));
+        CompiledNotation compiled = compileSignNotation(*notation, lexicon_.locations, shapes_, model_, source_, pointer);
+        if (compiled.keyframes.front().size() < 2) source_.failAt(pointer + "/notation", "the notation compiles to a single key");
+        if (compiled.keyframes.front().back().timeSeconds > kMaximumSignSeconds)
+            source_.failAt(pointer + "/notation", "a sign lasting over 10 s is a typo in a time");
+        sign.hands = compiled.hands;
+        sign.contact = compiled.contact;
+        sign.keyframes = std::move(compiled.keyframes);
+        sign.passThrough = std::move(compiled.passThrough);
+        sign.contactEvents = std::move(compiled.contacts);
+        sign.strokes = std::move(compiled.parts);
+        sign.notation = std::move(notation);
+    }
+
     void readHands(const json& item, LexiconSign& sign, const std::vector<std::string>& anchors, const std::string& pointer) {
         const json& hands = item.contains("hands") ? item["hands"] : json();
         if (!hands.is_array() || hands.empty() || hands.size() > 2)

@@ -11,10 +11,12 @@
 // default signer; a lab with another avatar can move them in the file.
 #include "hand/hand_model.hpp"
 #include "stimuli/story/handshapes.hpp"
+#include "stimuli/story/sign_notation.hpp"
 #include "stimuli/verbs/verbs.hpp"
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,6 +33,13 @@ struct LexiconSign {
     std::vector<std::vector<VerbKeyframe>> keyframes;
     std::string file;  // the lexicon file that defines it
     int line = 0;
+    // A sign written in the notation (stimuli/story/sign_notation.hpp; null for keyframes): its
+    // description, which keys the hand passes through ([hand][k], as keyframes), the contact
+    // events its motion reaches, and its strokes (for the checks).
+    std::shared_ptr<const SignNotation> notation;
+    std::vector<std::vector<bool>> passThrough;
+    std::vector<ContactEvent> contactEvents;
+    std::vector<CompiledNotation::Stroke> strokes;
 
     double durationSeconds() const;
 };

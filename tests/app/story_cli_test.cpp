@@ -97,7 +97,7 @@ TEST(StoryCli, ALabLexiconAddsToTheDefaultOneAndCheckListsOverridesAndFingerspel
     const auto withLab = runSignstim("story " + story + " --check --scenes " + shellQuote(kScenes) + lab);
     EXPECT_EQ(withLab.output.find("STUDENT will be fingerspelled"), std::string::npos) << withLab.output;
     EXPECT_NE(withLab.output.find("note: lexicon: " + (dir / "lab.json").string() + ":5: sign MY overrides " + kScenes +
-                                  "/lexicon/starter.json:5"),
+                                  "/lexicon/notation.json:49"),
               std::string::npos)
         << withLab.output;
     const auto timeline = runSignstim("story " + story + " --version point --json --scenes " + shellQuote(kScenes) + lab,

@@ -1,0 +1,217 @@
+// `signstim sign GLOSS`: one lexicon sign alone (issue 22 §4): what it is, the ASL-LEX code it
+// claims and the results of its checks (stimuli/story/sign_notation_check.hpp); with --out, the
+// signer signing it in citation form, as a clip or as a contact sheet of its frames.
+#include "app/cli_values.hpp"
+#include "app/clip_output.hpp"
+#include "app/commands.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "renderer/image_io.hpp"
+#include "renderer/renderer.hpp"
+#include "signer/avatar_render.hpp"
+#include "signer/clip_render.hpp"
+#include "signer/signer.hpp"
+#include "signer/timeline_clip.hpp"
+#include "stimuli/story/sign_notation_check.hpp"
+#include "stimuli/story/story_world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+namespace signstim::app {
+namespace {
+
+using namespace signstim::stimuli;
+
+struct SignOptions {
+    std::string gloss, outPath, scenesDir, lexicon, device;
+    std::string size = "640x480", fps = "30";
+    std::uint32_t msaa = 4;
+    int columns = 8;
+    bool quiet = false;
+};
+
+// [D] A sign is shown between short rests, in citation form (rate 1, not shortened for a
+// story: TimelineOptions::signScale 1).
+constexpr double kRestSeconds = 0.3;
+
+// Keeps every frame at half size for the contact sheet; frames at a contact event get a red
+// bar along their top, the others a grey one.
+class ContactSheetSink final : public render::FrameSink {
+public:
+    // Frames from `from` to `to` (clip seconds) are kept; the sign's own keys start at `signStart`.
+    ContactSheetSink(double fps, double from, double to, double signStart, std::vector<double> contacts)
+        : fps_(fps), from_(from), to_(to), signStart_(signStart), contacts_(std::move(contacts)) {}
+
+    void push(render::Image&& frame) override {
+        const double clipSeconds = static_cast<double>(pushed_++) / fps_;
+        if (clipSeconds < from_ - 1e-9 || clipSeconds > to_ + 1e-9) return;
+        // The signer's upper body: the middle 60 % across, the top 80 % (the hands' space), halved.
+        const std::uint32_t x0 = frame.width / 5, y0 = 0;
+        const std::uint32_t w = (frame.width * 3 / 5) / 2, h = (frame.height * 4 / 5) / 2;
+        render::Image tile;
+        tile.width = w;
+        tile.height = h;
+        tile.bytes.assign(static_cast<std::size_t>(w) * h * 4, 0);
+        const std::size_t bpp = frame.bytesPerPixel();
+        const auto channel = [&](std::uint32_t x, std::uint32_t y, int c) -> unsigned {
+            const std::size_t at = (static_cast<std::size_t>(y + y0) * frame.width + x + x0) * bpp;
+            return bpp == 4 ? frame.bytes[at + static_cast<std::size_t>(c)] : frame.bytes[at + 2 * static_cast<std::size_t>(c) + 1];
+        };
+        for (std::uint32_t y = 0; y < h; ++y)
+            for (std::uint32_t x = 0; x < w; ++x)
+                for (int c = 0; c < 4; ++c)
+                    tile.bytes[(static_cast<std::size_t>(y) * w + x) * 4 + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(
+                        (channel(2 * x, 2 * y, c) + channel(2 * x + 1, 2 * y, c) + channel(2 * x, 2 * y + 1, c) +
+                         channel(2 * x + 1, 2 * y + 1, c) + 2) / 4);
+        const double t = clipSeconds - signStart_;
+        bool contact = false;
+        for (double c : contacts_) contact = contact || std::abs(c - t) <= 0.5 / fps_;
+        const std::uint8_t bar[4] = {static_cast<std::uint8_t>(contact ? 220 : 150), static_cast<std::uint8_t>(contact ? 30 : 150),
+                                     static_cast<std::uint8_t>(contact ? 30 : 150), 255};
+        for (std::uint32_t y = 0; y < std::min<std::uint32_t>(h, contact ? 10 : 3); ++y)
+            for (std::uint32_t x = 0; x < w; ++x)
+                for (int c = 0; c < 4; ++c) tile.bytes[(static_cast<std::size_t>(y) * w + x) * 4 + static_cast<std::size_t>(c)] = bar[c];
+        tiles_.push_back(std::move(tile));
+    }
+    void finish() override {}
+    std::uint64_t framesPushed() const override { return pushed_; }
+    std::size_t kept() const { return tiles_.size(); }
+
+    render::Image sheet(int columns) const {
+        render::Image out;
+        if (tiles_.empty()) return out;
+        const std::uint32_t w = tiles_.front().width, h = tiles_.front().height, gap = 4;
+        const std::uint32_t cols = static_cast<std::uint32_t>(std::min<std::size_t>(static_cast<std::size_t>(columns), tiles_.size()));
+        const std::uint32_t rows = static_cast<std::uint32_t>((tiles_.size() + cols - 1) / cols);
+        out.width = cols * (w + gap) - gap;
+        out.height = rows * (h + gap) - gap;
+        out.bytes.assign(static_cast<std::size_t>(out.width) * out.height * 4, 255);
+        for (std::size_t i = 0; i < tiles_.size(); ++i) {
+            const std::uint32_t ox = static_cast<std::uint32_t>(i % cols) * (w + gap), oy = static_cast<std::uint32_t>(i / cols) * (h + gap);
+            for (std::uint32_t y = 0; y < h; ++y)
+                std::copy_n(tiles_[i].bytes.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * w * 4), w * 4,
+                            out.bytes.begin() + static_cast<std::ptrdiff_t>((static_cast<std::size_t>(oy + y) * out.width + ox) * 4));
+        }
+        return out;
+    }
+
+private:
+    double fps_, from_, to_, signStart_;
+    std::uint64_t pushed_ = 0;
+    std::vector<double> contacts_;
+    std::vector<render::Image> tiles_;
+};
+
+// What the sign is and whether it realizes what it claims; true when every check passes.
+bool report(const StoryWorld& world, const LexiconSign& sign) {
+    std::printf("%s (%s:%d): %s\n", sign.gloss.c_str(), sign.file.c_str(), sign.line, sign.meaning.c_str());
+    std::printf("  %zu hand%s, %.3f s in citation form\n", sign.hands.size(), sign.hands.size() == 1 ? "" : "s",
+                sign.durationSeconds() * sign.passes);
+    if (!sign.notation) {
+        std::printf("  written as keyframes (no notation): it claims no ASL-LEX code and has no checks\n");
+        return true;
+    }
+    const SignNotation& n = *sign.notation;
+    const std::vector<AslLexCode> derived = deriveAslLexCode(n, world.shapes);
+    for (std::size_t i = 0; i < derived.size(); ++i)
+        std::printf("  claims, part %zu: %s\n", i + 1, describeAslLexCode(derived[i]).c_str());
+    const NotationProvenance& p = n.provenance;
+    if (p.entry.empty()) std::printf("  follows no ASL-LEX 2.0 entry\n");
+    else
+        std::printf("  follows ASL-LEX 2.0 entry '%s'%s%s%s (SignDuration %.0f ms)\n", p.entry.c_str(),
+                    p.variant.empty() ? "" : ", variant: ", p.variant.c_str(), p.source.empty() ? "" : (", source: " + p.source).c_str(),
+                    p.durationMs);
+    bool ok = true;
+    for (const NotationCheck& c : checkSignNotation(sign, world.lexicon, world.shapes, world.handModel)) {
+        std::printf("  %s %s: %s\n", c.ok ? "ok  " : "FAIL", c.name.c_str(), c.detail.c_str());
+        ok = ok && c.ok;
+    }
+    return ok;
+}
+
+void renderSign(const SignOptions& o, const StoryWorld& world, const LexiconSign& sign) {
+    const ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
+    if (output.kind == render::OutputKind::Folder) throw commandLineError("--out", "give FILE.png (a contact sheet) or FILE.mp4");
+    Story story;
+    story.file = "sign " + sign.gloss;
+    StorySentence sentence;
+    StoryItem item;
+    item.kind = StoryItemKind::Sign;
+    item.gloss = sign.gloss;
+    sentence.gloss = sign.gloss;
+    sentence.items.push_back(item);
+    story.sentences.push_back(sentence);
+    TimelineOptions timing;
+    timing.signScale = 1.0;
+    timing.restSeconds = kRestSeconds;
+    const signer::Signer signer(world.scenes);
+    const signer::TimelineClip clip(signer.rig(), buildTimeline(story, VerbVersion::Point, world.sources(story), timing));
+    double start = 0.0, from = 0.0, to = clip.durationSeconds();
+    for (const TimelineSpan& span : clip.timeline().spans)
+        if (span.kind == SpanKind::Sign) start = span.keysStartSeconds, from = span.startSeconds, to = span.keysEndSeconds + 0.1;
+    if (output.kind == render::OutputKind::Video) {
+        const std::uint64_t frames = renderClipToOutput(output, signer, clip, start);
+        std::printf("%s: %s, %llu frames, %.2f s\n", output.out.string().c_str(), sign.gloss.c_str(),
+                    static_cast<unsigned long long>(frames), clip.durationSeconds());
+        return;
+    }
+    // The contact sheet: every frame of the sign's own keys (and the moves in and out).
+    render::Renderer renderer(signer::signerRendererOptions(output.size.width, output.size.height, output.msaa, output.device));
+    checkOutputWritable(output.out);
+    const int handle = renderer.addScene(signer.avatar());
+    signer::ClipRenderOptions options;
+    options.framesPerSecond = output.frameRate.value();
+    std::vector<double> contacts;
+    for (const ContactEvent& e : sign.contactEvents) contacts.push_back(e.timeSeconds);
+    ContactSheetSink sink(options.framesPerSecond, from, to, start, contacts);
+    signer::renderClips(renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink);
+    const std::size_t frames = sink.kept();
+    failOnValidationMessages(renderer);
+    render::writeImage(sink.sheet(o.columns), output.out);
+    std::printf("%s: %s, contact sheet of %zu frames at %.0f fps from the move in to the end, %d a row (red: a contact event)\n",
+                output.out.string().c_str(), sign.gloss.c_str(), frames,
+                options.framesPerSecond, o.columns);
+}
+
+}  // namespace
+
+void registerSignCommand(Commands& commands) {
+    auto o = std::make_shared<SignOptions>();
+    CLI::App* sign = commands.root.add_subcommand(
+        "sign",
+        "One sign of the lexicon alone (docs/lexicon.md): its place, the ASL-LEX 2.0 code it claims and\n"
+        "the results of its checks (exit 2 when one fails); with --out, the signer signing it in citation\n"
+        "form as a clip or a contact sheet of its frames.\n"
+        "Examples:\n"
+        "  signstim sign MOTHER\n"
+        "  signstim sign LIBRARY --out library.png\n"
+        "  signstim sign HOMEWORK --out homework.mp4");
+    sign->add_option("GLOSS", o->gloss, "The sign's gloss (MOTHER, THANK-YOU)")->required();
+    sign->add_option("--out", o->outPath, "FILE.png (a contact sheet of its frames) or FILE.mp4");
+    sign->add_option("--size", o->size, "Frame size WxH (each frame of the sheet is half of it)")->capture_default_str();
+    sign->add_option("--fps", o->fps, "Frame rate")->capture_default_str();
+    sign->add_option("--columns", o->columns, "Frames a row of the contact sheet")->capture_default_str()->check(CLI::Range(1, 64));
+    sign->add_option("--msaa", o->msaa, "Multisampling: 1 or 4")->capture_default_str();
+    sign->add_option("--device", o->device, "Vulkan device: name substring or index (see `signstim devices`)");
+    sign->add_option("--scenes", o->scenesDir, "Data directory (default: $SIGNSTIM_SCENES, else the scenes/ installed beside signstim)");
+    sign->add_option("--lexicon", o->lexicon, "A lab's own lexicon on top of SCENES/lexicon/ (as for `story`)");
+    sign->add_flag("--quiet", o->quiet, "No progress on stderr");
+    sign->callback([o] {
+        const StoryWorld world(o->scenesDir, o->lexicon);
+        const LexiconSign* found = world.lexicon.find(o->gloss);
+        if (!found) {
+            std::string known;
+            for (const std::string& g : world.lexicon.glosses()) known += (known.empty() ? "" : " ") + g;
+            throw InputError(world.lexicon.file, 0, "GLOSS", "no sign " + o->gloss + " in the lexicon (signs: " + known + ")");
+        }
+        const bool ok = report(world, *found);
+        std::fflush(stdout);
+        if (!o->outPath.empty()) renderSign(*o, world, *found);
+        if (!ok) throw InputError(found->file, found->line, "notation", found->gloss + " does not realize the code it claims (FAIL above)");
+    });
+}
+
+}  // namespace signstim::app

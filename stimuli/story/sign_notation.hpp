@@ -1,0 +1,159 @@
+#pragma once
+// The sign notation (docs/lexicon.md, issue 22 §1): a lexicon sign written in the terms of sign
+// phonology as ASL-LEX 2.0 codes them (Caselli et al. 2017; Sehyr et al. 2021) — per part of
+// the sign (a compound has parts): handshape at start and end, orientation, the place (on the
+// body, on the other hand or arm, or in neutral space), the path (straight, arc, circle,
+// zigzag, wavy), a local movement (wiggle, flick, bend, open/close, twist, nod, rub), its
+// repetition and return (retrace, lifted, continue, trill), the two hands' relation
+// (one, symmetric, mirrored, alternating, base) and contact as events the motion must reach.
+// It is compiled to the keyframes every lexicon sign has (stimuli/story/lexicon.hpp), with the
+// keys the hand passes through marked, so stories use it unchanged. Raw keyframes stay the
+// escape hatch. Provenance: the ASL-LEX 2.0 entry it follows, its variant and source, and the
+// entry's code, which the description's own code (derived, never written twice) must equal
+// except where the variant names a difference.
+#include "hand/hand_model.hpp"
+#include "stimuli/json_source.hpp"
+#include "stimuli/story/handshapes.hpp"
+#include "stimuli/verbs/verbs.hpp"
+
+#include <glm/glm.hpp>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace signstim::stimuli {
+
+enum class HandRelation { One, Symmetric, Mirrored, Alternating, Base };
+enum class PathShape { None, Straight, Arc, Circle, Zigzag, Wavy };
+enum class RepeatReturn { Retrace, Lifted, Continue, Trill };
+enum class LocalMovement { None, Wiggle, Flick, Bend, OpenClose, Twist, Nod, Rub };
+std::string toString(HandRelation relation);
+std::string toString(PathShape shape);
+std::string toString(RepeatReturn mode);
+std::string toString(LocalMovement movement);
+
+// A place: a body location of the lexicon ("chin", "cheek-left", "neutral"), or a place on the
+// other hand or arm ("hand:palm", "hand:back", "hand:heel", "hand:radial", "hand:ulnar",
+// "hand:fingertips", "hand:index" ..., "arm:wrist", "arm:forearm", "arm:elbow"), plus an offset.
+struct NotationPlace {
+    std::string name;
+    glm::dvec3 offsetMm{0.0};
+    bool onOtherHand() const { return name.rfind("hand:", 0) == 0 || name.rfind("arm:", 0) == 0; }
+};
+
+struct NotationContact {
+    // The place the hand reaches (default: the part's start place for an event at the stroke's
+    // start, else where the path goes), with its offset (where the surface is).
+    std::string at;
+    glm::dvec3 offsetMm{0.0};
+    std::string by;    // the point of the acting hand that reaches it (a hand point name)
+    double when = 1.0; // in the stroke: 0 its start, 1 its end (every repetition)
+    int line = 0;
+};
+
+struct NotationPart {
+    int line = 0;
+    double seconds = 0.0;  // citation time of the part, its repetitions included
+    double transitionSeconds = 0.0;  // from the previous part's end (0 for the first)
+    std::string handshape, endHandshape;  // endHandshape == handshape when it does not change
+    glm::dvec3 fingers{0.0, 1.0, 0.0}, palm{0.0, 0.0, 1.0};
+    std::optional<glm::dvec3> endFingers, endPalm;
+    NotationPlace at;
+    std::string touch = "base";  // the dominant hand's point that is at `at`
+    // Movement.
+    PathShape path = PathShape::None;
+    std::optional<NotationPlace> to;  // where the path ends, or ...
+    glm::dvec3 direction{0.0};        // ... its direction (unit) times
+    double sizeMm = 0.0;              // its size (a circle's diameter, an arc's chord)
+    glm::dvec3 side{0.0};             // an arc's or zigzag's bulge side; a circle's start side
+    glm::dvec3 planeNormal{0.0, 0.0, 1.0};  // circle: the axis it turns about (right hand rule)
+    LocalMovement local = LocalMovement::None;
+    std::string localWith;  // wiggle: the shape alternated with
+    int localCount = 0;     // oscillations of the local movement (0: none)
+    double localDegrees = 0.0;
+    int repeat = 1;
+    RepeatReturn returns = RepeatReturn::Retrace;
+    glm::dvec3 lift{0.0, 0.0, 1.0};  // a lifted return bulges this way
+    // The other hand: its handshape and pose when the relation is Base.
+    std::string baseHandshape;
+    glm::dvec3 baseFingers{0.0, 0.0, 1.0}, basePalm{0.0, 1.0, 0.0};
+    NotationPlace baseAt;
+    std::vector<NotationContact> contacts;
+};
+
+// An ASL-LEX 2.0 code of one part (morpheme): its columns' values as ASL-LEX writes them.
+struct AslLexCode {
+    std::string handshape;      // Handshape.2.0 ("open_b")
+    std::string signType;       // SignType.2.0 ("OneHanded")
+    std::string movement;       // Movement.2.0 ("Straight", "Curved", "Circular", "Z-shaped", "None")
+    std::string majorLocation;  // MajorLocation.2.0 ("Head")
+    std::string minorLocation;  // MinorLocation.2.0 ("Chin")
+    std::string nondominant;    // NonDominantHandshape.2.0 ("B"), empty for one-handed
+    int repeated = -1;          // RepeatedMovement.2.0 (0/1; -1 not stated)
+    int contact = -1;           // Contact.2.0
+};
+
+struct NotationProvenance {
+    std::string entry;    // ASL-LEX 2.0 EntryID ("mother"); empty: none
+    std::string variant;  // the variant followed, when it differs from the entry
+    std::string source;   // where the form comes from ("ASL-LEX 2.0 video", a dictionary)
+    std::vector<std::string> differs;  // code fields the variant differs in ("handshape", ...)
+    std::vector<AslLexCode> code;      // the entry's code per part (compounds: M1, M2)
+    double durationMs = 0.0;           // SignDuration(ms); 0: not stated
+    int line = 0;
+};
+
+struct SignNotation {
+    HandRelation hands = HandRelation::One;
+    std::vector<NotationPart> parts;
+    NotationProvenance provenance;
+};
+
+// A contact event of the compiled sign: where the acting hand's point must be, and when.
+struct ContactEvent {
+    double timeSeconds = 0.0;
+    int part = 0;
+    int hand = 0;  // index into the sign's hands (0 right)
+    std::string at, by;
+    glm::dvec3 offsetMm{0.0};
+};
+
+// What compiling gives: per hand, keyframes as the lexicon keeps them and which of them the
+// hand passes through without stopping (coarticulation keys, sampleTrack); the contact events;
+// and the stroke ends the repetitions return to (for the checks).
+struct CompiledNotation {
+    std::vector<HandSide> hands;
+    std::vector<std::vector<VerbKeyframe>> keyframes;
+    std::vector<std::vector<bool>> passThrough;
+    std::vector<ContactEvent> contacts;
+    SignContact contact;
+    struct Stroke {
+        int part = 0;
+        double startSeconds = 0.0, endSeconds = 0.0;  // of the part's strokes and returns
+        glm::dvec3 strokeEndMm{0.0};                  // the dominant palm origin at the first stroke's end
+        int strokes = 1;
+    };
+    std::vector<Stroke> parts;
+};
+
+// Reads the "notation" object of the sign at `pointer` (errors name the file, line and field).
+SignNotation readSignNotation(const JsonSource& source, const std::string& pointer, const HandshapeLibrary& shapes);
+
+// Compiles `notation` with the lexicon's body `locations`; throws InputError at `source`'s
+// `pointer` for a place it cannot resolve or a hand point it does not know.
+CompiledNotation compileSignNotation(const SignNotation& notation, const std::map<std::string, glm::dvec3>& locations,
+                                     const HandshapeLibrary& shapes, const hand::HandModel& model,
+                                     const JsonSource& source, const std::string& pointer);
+
+// The point `name` of a hand with `controls` in its palm frame (mm): the lexicon's touch points
+// (touchPointNames) and "back", "heel", "radial", "ulnar", "thumb", "index", "middle", "ring",
+// "little" (their tips), "wrist", "forearm", "elbow" (along the forearm, the wrist straight).
+std::optional<glm::dvec3> handPointMm(const hand::HandModel& model, const hand::HandControls& controls, hand::Side side,
+                                      const std::string& name);
+// The same point in signing space for a hand at `pose`.
+glm::dvec3 handPointInSpace(const HandPose& pose, const glm::dvec3& pointInPalmMm);
+const std::vector<std::string>& handPointNames();
+
+}  // namespace signstim::stimuli

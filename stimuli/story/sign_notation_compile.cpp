@@ -1,0 +1,404 @@
+// Compiling a sign's notation to keyframes (docs/lexicon.md, "How a sign is compiled"): the
+// places resolved (body locations, points of the other hand by the hand model), each stroke
+// sampled along its path with the inner samples passed through (sampleTrack), circles closed,
+// repetitions returned as their mode says, the other hand mirrored, alternating or held as the
+// base, and every contact turned into an event at its moment.
+#include "stimuli/story/sign_notation.hpp"
+
+#include "stimuli/story/lexicon.hpp"
+#include "stimuli/verbs/sora.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace signstim::stimuli {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// [D] Samples of a curved stroke: 12 a circle (30° turns, which the hand passes at cos² 30° =
+// 75 % of its chord speed, sampleTrack), 6 an arc, 12 a wavy path.
+constexpr int kCircleSamples = 12, kArcSamples = 6, kWavySamples = 12;
+// [D] An arc bulges by 15 % of its chord (at least 15 mm), a zigzag or wave by 15 %.
+constexpr double kArcBulge = 0.15, kArcMinimumBulgeMm = 15.0, kZigzagWidth = 0.15;
+// [D] A lifted return takes 60 % of the stroke's time and clears the surface by 30 % of the
+// stroke's length (at least 15 mm): the quick return of a tap (issue 22: "quick lifted return").
+constexpr double kLiftedReturnTime = 0.6, kLiftedHeight = 0.3, kLiftedMinimumMm = 15.0;
+// [D] A flick opens in the first 35 % of its stroke (a snap), the rest held open.
+constexpr double kFlickShare = 0.35;
+// [D] A rub moves 8 mm to each side.
+constexpr double kRubMm = 8.0;
+
+glm::dvec3 mirror(const glm::dvec3& v) { return {-v.x, v.y, v.z}; }
+
+glm::dquat mirror(const glm::dquat& q) {
+    return orientationFromFingersPalm(mirror(fingersDirection(q)), mirror(palmDirection(q)));
+}
+
+// One sample of a stroke: where the palm origin is at u (0..1 of the stroke), and whether the
+// hand passes through it.
+struct Sample {
+    double u = 0.0;
+    glm::dvec3 position{0.0};
+    bool via = false;
+};
+
+class Compiler {
+public:
+    Compiler(const SignNotation& n, const std::map<std::string, glm::dvec3>& locations, const HandshapeLibrary& shapes,
+             const hand::HandModel& model, const JsonSource& source, const std::string& pointer)
+        : n_(n), locations_(locations), shapes_(shapes), model_(model), source_(source), pointer_(pointer) {}
+
+    CompiledNotation compile() {
+        const bool twoHands = n_.hands != HandRelation::One;
+        out_.hands = twoHands ? std::vector<HandSide>{HandSide::Right, HandSide::Left} : std::vector<HandSide>{HandSide::Right};
+        out_.keyframes.resize(out_.hands.size());
+        out_.passThrough.resize(out_.hands.size());
+        if (n_.hands == HandRelation::Base) {
+            bool any = false;
+            for (const NotationPart& p : n_.parts) any = any || !p.baseHandshape.empty();
+            if (!any) source_.failAt(pointer_ + "/notation/parts/0/base", "a sign with \"hands\": \"base\" needs a base hand in a part");
+        }
+        double t = 0.0;
+        for (std::size_t i = 0; i < n_.parts.size(); ++i) {
+            part_ = static_cast<int>(i);
+            partPointer_ = pointer_ + "/notation/parts/" + std::to_string(i);
+            t += n_.parts[i].transitionSeconds;
+            compilePart(n_.parts[i], t);
+            t += n_.parts[i].seconds;
+        }
+        for (const ContactEvent& e : out_.contacts) {
+            const bool onHand = e.at.rfind("hand:", 0) == 0 || e.at.rfind("arm:", 0) == 0;
+            (onHand ? out_.contact.hands : out_.contact.body) = true;
+        }
+        return std::move(out_);
+    }
+
+private:
+    const hand::HandControls& controls(const std::string& shape) const { return shapes_.at(shape).controls; }
+
+    glm::dvec3 point(const std::string& shape, hand::Side side, const std::string& name, const std::string& field) const {
+        const std::optional<glm::dvec3> p = handPointMm(model_, controls(shape), side, name);
+        if (!p) {
+            std::string known;
+            for (const std::string& k : handPointNames()) known += (known.empty() ? "" : ", ") + k;
+            source_.failAt(field, "unknown hand point '" + name + "' (known: " + known + ")");
+        }
+        return *p;
+    }
+
+    // The base hand's pose in `part` (the next part's where this one has none: it waits there).
+    std::optional<HandPose> basePose(std::size_t part) const {
+        for (std::size_t i = part; i < n_.parts.size(); ++i) {
+            const NotationPart& p = n_.parts[i];
+            if (p.baseHandshape.empty()) continue;
+            const glm::dquat q = orientationFromFingersPalm(p.baseFingers, p.basePalm);
+            const glm::dvec3 palm = point(p.baseHandshape, hand::Side::Left, "palm", "");
+            HandPose pose;
+            pose.orientation = q;
+            pose.positionMm = palmOriginForTouch(body(p.baseAt, partPointer_ + "/base/at"), q, palm);
+            return pose;
+        }
+        return std::nullopt;
+    }
+
+    glm::dvec3 body(const NotationPlace& place, const std::string& field) const {
+        const auto found = locations_.find(place.name);
+        if (found == locations_.end()) {
+            std::string known;
+            for (const auto& l : locations_) known += (known.empty() ? "" : ", ") + l.first;
+            source_.failAt(field, "unknown place '" + place.name + "' (body locations: " + known +
+                                      "; on the other hand: hand:palm, hand:back, ...)");
+        }
+        return found->second + place.offsetMm;
+    }
+
+    // A place in signing space: a body location, or a point of the base hand in this part.
+    glm::dvec3 resolve(const NotationPlace& place, const std::string& field) const {
+        if (!place.onOtherHand()) return body(place, field);
+        const std::optional<HandPose> base = n_.hands == HandRelation::Base ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
+        if (!base) source_.failAt(field, "a place on the other hand needs \"hands\": \"base\" and the part's base hand");
+        const std::string name = place.name.substr(place.name.find(':') + 1);
+        const std::string& shape = n_.parts[static_cast<std::size_t>(part_)].baseHandshape.empty()
+                                       ? baseShapeFrom(static_cast<std::size_t>(part_))
+                                       : n_.parts[static_cast<std::size_t>(part_)].baseHandshape;
+        return handPointInSpace(*base, point(shape, hand::Side::Left, name, field)) + place.offsetMm;
+    }
+
+    const std::string& baseShapeFrom(std::size_t part) const {
+        for (std::size_t i = part; i < n_.parts.size(); ++i)
+            if (!n_.parts[i].baseHandshape.empty()) return n_.parts[i].baseHandshape;
+        return n_.parts.back().baseHandshape;
+    }
+
+    // The stroke's samples from start to end (palm origins).
+    std::vector<Sample> stroke(const NotationPart& p, const glm::dvec3& start, const glm::dvec3& end) const {
+        std::vector<Sample> s;
+        const glm::dvec3 chord = end - start;
+        const double length = glm::length(chord);
+        switch (p.path) {
+            case PathShape::None:
+            case PathShape::Straight:
+                s = {{0.0, start, false}, {1.0, end, false}};
+                // A flick snaps open early: a key where it is open (passed through).
+                if (p.local == LocalMovement::Flick) s.insert(s.begin() + 1, {kFlickShare, start + kFlickShare * chord, length > 0.0});
+                break;
+            case PathShape::Arc: {
+                const double bulge = std::max(kArcMinimumBulgeMm, kArcBulge * length);
+                for (int k = 0; k <= kArcSamples; ++k) {
+                    const double u = static_cast<double>(k) / kArcSamples;
+                    s.push_back({u, start + u * chord + p.side * bulge * std::sin(kPi * u), k > 0 && k < kArcSamples});
+                }
+                break;
+            }
+            case PathShape::Circle: {
+                const double r = 0.5 * p.sizeMm;
+                const glm::dvec3 centre = start - r * p.side;
+                for (int k = 0; k <= kCircleSamples; ++k) {
+                    const double u = static_cast<double>(k) / kCircleSamples, a = 2.0 * kPi * u;
+                    // The last sample is the first: the circle closes exactly.
+                    const glm::dvec3 at = k == kCircleSamples ? start : centre + r * (p.side * std::cos(a) + p.direction * std::sin(a));
+                    s.push_back({u, at, k > 0 && k < kCircleSamples});
+                }
+                break;
+            }
+            case PathShape::Zigzag: {
+                const int corners = 4;
+                for (int k = 0; k <= corners + 1; ++k) {
+                    const double u = static_cast<double>(k) / (corners + 1);
+                    const double lateral = k == 0 || k == corners + 1 ? 0.0 : (k % 2 ? 1.0 : -1.0) * kZigzagWidth * length;
+                    // Corners: the hand turns sharply there and nearly stops (not via points).
+                    s.push_back({u, start + u * chord + p.side * lateral, false});
+                }
+                break;
+            }
+            case PathShape::Wavy:
+                for (int k = 0; k <= kWavySamples; ++k) {
+                    const double u = static_cast<double>(k) / kWavySamples;
+                    s.push_back({u, start + u * chord + p.side * kZigzagWidth * length * std::sin(4.0 * kPi * u),
+                                 k > 0 && k < kWavySamples});
+                }
+                break;
+        }
+        return s;
+    }
+
+    void key(int hand, double t, const HandPose& pose, const std::string& shape, bool via) {
+        std::vector<VerbKeyframe>& keys = out_.keyframes[static_cast<std::size_t>(hand)];
+        std::vector<bool>& flags = out_.passThrough[static_cast<std::size_t>(hand)];
+        VerbKeyframe k;
+        k.timeSeconds = t;
+        k.pose = pose;
+        k.handshape = shape;
+        if (!keys.empty() && t <= keys.back().timeSeconds + 1e-9) {
+            // The same moment as the last key (a part that starts where the last ended): replaced.
+            keys.back() = k;
+            flags.back() = via;
+            return;
+        }
+        keys.push_back(k);
+        flags.push_back(via);
+    }
+
+    void compilePart(const NotationPart& p, double t0) {
+        const glm::dquat q0 = orientationFromFingersPalm(p.fingers, p.palm);
+        const glm::dquat q1 = p.endFingers ? orientationFromFingersPalm(*p.endFingers, *p.endPalm) : q0;
+        const glm::dvec3 startTouch = point(p.handshape, hand::Side::Right, p.touch, partPointer_ + "/touch");
+        const glm::dvec3 endTouch = point(p.endHandshape, hand::Side::Right, p.touch, partPointer_ + "/touch");
+        const glm::dvec3 start = palmOriginForTouch(resolve(p.at, partPointer_ + "/at"), q0, startTouch);
+        glm::dvec3 end = start;
+        if (p.to) end = palmOriginForTouch(resolve(*p.to, partPointer_ + "/path/to"), q1, endTouch);
+        else if (p.path != PathShape::Circle && p.sizeMm > 0.0) end = start + p.direction * p.sizeMm;
+        const std::vector<Sample> forth = stroke(p, start, end);
+        // Time: n strokes and n − 1 returns.
+        const int n = p.repeat;
+        const double returnShare = p.returns == RepeatReturn::Lifted ? kLiftedReturnTime : p.returns == RepeatReturn::Continue ? 0.0 : 1.0;
+        const double ts = p.seconds / (n + (n - 1) * returnShare), tr = ts * returnShare;
+        CompiledNotation::Stroke record;
+        record.part = part_;
+        record.startSeconds = t0;
+        record.endSeconds = t0 + p.seconds;
+        record.strokeEndMm = forth.back().position;
+        record.strokes = n;
+        out_.parts.push_back(record);
+        // The dominant hand's path, as (time, position, orientation blend u, shape, via).
+        struct Key {
+            double t;
+            glm::dvec3 position;
+            double u;
+            bool via;
+        };
+        std::vector<Key> path;
+        const auto addStroke = [&](double s0, bool junctionVia) {
+            for (std::size_t k = 0; k < forth.size(); ++k) {
+                if (k == 0 && !path.empty()) {
+                    path.back().via = junctionVia;
+                    continue;
+                }
+                path.push_back({s0 + forth[k].u * ts, forth[k].position, forth[k].u, forth[k].via});
+            }
+        };
+        double now = t0;
+        for (int r = 0; r < n; ++r) {
+            addStroke(now, p.returns == RepeatReturn::Continue);
+            for (const NotationContact& c : p.contacts) out_.contacts.push_back({now + c.when * ts, part_, 0, c.at, c.by, c.offsetMm});
+            now += ts;
+            if (r + 1 == n) break;
+            if (p.returns == RepeatReturn::Retrace || p.returns == RepeatReturn::Trill) {
+                for (std::size_t k = forth.size() - 1; k-- > 0;)
+                    path.push_back({now + (1.0 - forth[k].u) * tr, forth[k].position, forth[k].u, forth[k].via});
+            } else if (p.returns == RepeatReturn::Lifted) {
+                // The return bulges the lift's way across the stroke; a tap whose lift is along
+                // its own line goes straight back, quickly.
+                const glm::dvec3 a = forth.back().position, b = forth.front().position;
+                const glm::dvec3 along = glm::length(a - b) > 1e-6 ? glm::normalize(a - b) : glm::dvec3(0.0);
+                const glm::dvec3 across = p.lift - glm::dot(p.lift, along) * along;
+                if (glm::length(across) > 0.3) {
+                    const double h = std::max(kLiftedMinimumMm, kLiftedHeight * glm::length(a - b));
+                    path.push_back({now + 0.5 * tr, 0.5 * (a + b) + glm::normalize(across) * h, 0.5, true});
+                }
+                path.push_back({now + tr, b, 0.0, false});
+            }
+            now += tr;
+        }
+        // Local movement keys over a still hand (the parser allows oscillations only without a path).
+        const bool oscillates = p.localCount > 0 && (p.local == LocalMovement::Wiggle || p.local == LocalMovement::Twist ||
+                                                     p.local == LocalMovement::Nod || p.local == LocalMovement::Rub);
+        if (oscillates && p.path == PathShape::None) {
+            path.clear();
+            const int steps = 2 * p.localCount;
+            for (int k = 0; k <= steps; ++k) path.push_back({t0 + p.seconds * k / steps, start, static_cast<double>(k) / steps, false});
+        }
+        const std::optional<HandPose> base = n_.hands == HandRelation::Base ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
+        const std::string baseShape = n_.hands == HandRelation::Base ? baseShapeFrom(static_cast<std::size_t>(part_)) : "";
+        for (std::size_t k = 0; k < path.size(); ++k) {
+            const Key& key0 = path[k];
+            for (int h = 0; h < static_cast<int>(out_.hands.size()); ++h) {
+                // Alternating: the left hand is half a cycle behind (the stroke's other end).
+                const bool opposite = h == 1 && n_.hands == HandRelation::Alternating;
+                double u = key0.u;
+                glm::dvec3 position = key0.position;
+                if (opposite && !oscillates) {
+                    u = 1.0 - u;
+                    position = positionAt(forth, u);
+                }
+                HandPose pose;
+                pose.positionMm = position;
+                pose.orientation = slerpShortest(q0, q1, u);
+                std::string shape = handshapeAt(p, u);
+                if (oscillates) applyLocal(p, k, opposite, start, pose, shape);
+                if (h == 1) {
+                    if (n_.hands == HandRelation::Base) {
+                        key(h, key0.t, *base, baseShape, false);
+                        continue;
+                    }
+                    if (n_.hands == HandRelation::Symmetric) {
+                        // Parallel: the same displacement, from the mirrored start.
+                        pose.positionMm = mirror(start) + (pose.positionMm - start);
+                        pose.orientation = mirror(pose.orientation);
+                    } else {
+                        pose.positionMm = mirror(pose.positionMm);
+                        pose.orientation = mirror(pose.orientation);
+                    }
+                }
+                key(h, key0.t, pose, shape, key0.via);
+            }
+        }
+    }
+
+    static glm::dvec3 positionAt(const std::vector<Sample>& s, double u) {
+        for (std::size_t k = 0; k + 1 < s.size(); ++k)
+            if (u <= s[k + 1].u + 1e-12) {
+                const double w = s[k + 1].u > s[k].u ? (u - s[k].u) / (s[k + 1].u - s[k].u) : 0.0;
+                return s[k].position + w * (s[k + 1].position - s[k].position);
+            }
+        return s.back().position;
+    }
+
+    // The handshape at u of a stroke: a flick snaps open early, other changes at the end.
+    static std::string handshapeAt(const NotationPart& p, double u) {
+        if (p.endHandshape == p.handshape) return p.handshape;
+        if (p.local == LocalMovement::Flick) return u >= kFlickShare - 1e-9 ? p.endHandshape : p.handshape;
+        return u >= 1.0 - 1e-9 ? p.endHandshape : p.handshape;
+    }
+
+    // The k-th key of an oscillating local movement: even keys at the start, odd keys at the
+    // movement's other extreme (its opposite for the alternating left hand).
+    static void applyLocal(const NotationPart& p, std::size_t k, bool opposite, const glm::dvec3& start, HandPose& pose,
+                           std::string& shape) {
+        const bool odd = (k % 2 == 1) != opposite;
+        const double angle = p.localDegrees * kPi / 180.0;
+        switch (p.local) {
+            case LocalMovement::Wiggle: shape = odd ? p.localWith : p.handshape; break;
+            case LocalMovement::Twist:
+                // About the fingers' axis, half the angle to each side of the described orientation.
+                pose.orientation = glm::angleAxis((odd ? 0.5 : -0.5) * angle, fingersDirection(pose.orientation)) * pose.orientation;
+                break;
+            case LocalMovement::Nod: {
+                // The wrist bends toward the palm and back.
+                const glm::dvec3 axis = glm::normalize(glm::cross(fingersDirection(pose.orientation), palmDirection(pose.orientation)));
+                if (odd) pose.orientation = glm::angleAxis(angle, axis) * pose.orientation;
+                break;
+            }
+            case LocalMovement::Rub:
+                pose.positionMm = start + (odd ? kRubMm : 0.0) * (p.direction == glm::dvec3(0.0) ? glm::dvec3(1, 0, 0) : p.direction);
+                break;
+            default: break;
+        }
+    }
+
+    const SignNotation& n_;
+    const std::map<std::string, glm::dvec3>& locations_;
+    const HandshapeLibrary& shapes_;
+    const hand::HandModel& model_;
+    const JsonSource& source_;
+    std::string pointer_, partPointer_;
+    int part_ = 0;
+    CompiledNotation out_;
+};
+
+}  // namespace
+
+const std::vector<std::string>& handPointNames() {
+    static const std::vector<std::string> names{"base",   "palm",   "knuckles", "thumb-tip", "index-tip", "middle-tip",
+                                                "ring-tip", "little-tip", "fingertips", "back", "heel", "radial",
+                                                "ulnar",  "thumb",  "index",    "middle",    "ring",      "little",
+                                                "wrist",  "forearm", "elbow"};
+    return names;
+}
+
+std::optional<glm::dvec3> handPointMm(const hand::HandModel& model, const hand::HandControls& controls, hand::Side side,
+                                      const std::string& name) {
+    if (std::optional<glm::dvec3> p = touchPointMm(model, controls, side, name)) return p;
+    static const std::vector<std::string> digits{"thumb", "index", "middle", "ring", "little"};
+    for (std::size_t d = 0; d < digits.size(); ++d)
+        if (name == digits[d]) return touchPointMm(model, controls, side, d == 0 ? "thumb-tip" : digits[d] + "-tip");
+    const hand::HandDimensions& dim = model.dimensions;
+    const float mid = 0.5f * hand::palmKnuckleZMm(model), heel = 0.15f * hand::palmKnuckleZMm(model);
+    glm::vec3 p;
+    if (name == "back") p = {2.0f * dim.palmCentreXMm - hand::palmarSurfaceXMm(model, mid), 0.0f, mid};
+    else if (name == "heel") p = {hand::palmarSurfaceXMm(model, heel), 0.0f, heel};
+    else if (name == "radial") p = {dim.palmCentreXMm, model.mcpPositionMm[0].y, mid};
+    else if (name == "ulnar") p = {dim.palmCentreXMm, model.mcpPositionMm[3].y, mid};
+    // [D] Along a straight forearm: the wrist's back 20 mm behind the palm frame's origin, the
+    // middle of the forearm's back 120 mm, the elbow 260 mm (the default signer's forearm).
+    else if (name == "wrist") p = {2.0f * dim.palmCentreXMm - hand::palmarSurfaceXMm(model, 0.0f), 0.0f, -20.0f};
+    else if (name == "forearm") p = {-20.0f, 0.0f, -120.0f};
+    else if (name == "elbow") p = {-20.0f, 0.0f, -260.0f};
+    else return std::nullopt;
+    return glm::dvec3(side == hand::Side::Right ? p : hand::mirrorToLeft(p));
+}
+
+glm::dvec3 handPointInSpace(const HandPose& pose, const glm::dvec3& p) {
+    // The palm frame's y appears as −y in signing space (lexicon.hpp, palmOriginForTouch).
+    return pose.positionMm + pose.orientation * glm::dvec3(p.x, -p.y, p.z);
+}
+
+CompiledNotation compileSignNotation(const SignNotation& notation, const std::map<std::string, glm::dvec3>& locations,
+                                     const HandshapeLibrary& shapes, const hand::HandModel& model, const JsonSource& source,
+                                     const std::string& pointer) {
+    return Compiler(notation, locations, shapes, model, source, pointer).compile();
+}
+
+}  // namespace signstim::stimuli
