@@ -225,7 +225,7 @@ TEST(Clearance, RoutedFramesOutsideTheVerbSlotsAreTheSameInEveryVersion) {
     EXPECT_GT(compared, 300);
 }
 
-// Each default story in the four versions, every frame at 30 fps as `signstim story` renders it.
+// Each default story in the four versions, every frame at 30 fps (and each item's first and last key) as `signstim story` renders it.
 class StoryClearance : public testing::TestWithParam<int> {
 protected:
     struct Checked {
