@@ -17,6 +17,8 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -194,6 +196,49 @@ TEST(Clearance, TransitionsDetourAroundTheOtherHandAndKeepTheirKeys) {
         const double near = t < 0.5 ? t + 0.005 : t - 0.005;
         EXPECT_LT(glm::distance(clip.postureAt(near).rightWrist->wristMm, atKey), 0.5f) << near;
     }
+}
+
+TEST(Clearance, TransitionsAreJudgedAtTheItemsOwnKeysNotTheNearestFrame) {
+    // An item's keys end between two 30 fps frames (0.41 s): the check poses the signer there
+    // too, and a transition that leaves a touch (at the key, -15 mm) is allowed that deep,
+    // though the frame before it (0.4 s, mid-lift) was clear.
+    const World& w = world();
+    stimuli::Timeline timeline;
+    timeline.durationSeconds = 1.0;
+    const glm::dvec3 forward(0, 0, 1), down(0, -1, 0);
+    for (double t : {0.0, 0.41, 1.0}) {
+        timeline.right.push_back(key(t, {100, -40, 300}, forward, down, "B"));
+        timeline.left.push_back(key(t, {-100, -40, 300}, forward, down, "B"));
+    }
+    timeline.spans = {{stimuli::SpanKind::Sign, 0.0, 0.41, "A", 0, 0, 0.0, 0.41, {}},
+                      {stimuli::SpanKind::Sign, 0.41, 1.0, "B", 0, 1, 0.9, 1.0, {}}};
+    timeline.gaze = {{0.0, std::nullopt}, {1.0, std::nullopt}};
+    const signer::TimelineClip clip(w.signer.rig(), timeline);
+    const std::vector<signer::ClearanceFrame> frames = signer::clearanceFrames(w.signer.rig(), clip);
+    bool atKey = false;
+    for (const signer::ClearanceFrame& f : frames) atKey = atKey || (std::abs(f.seconds - 0.41) < 1e-12 && f.span == 0);
+    EXPECT_TRUE(atKey);
+    EXPECT_TRUE(std::is_sorted(frames.begin(), frames.end(),
+                               [](const signer::ClearanceFrame& a, const signer::ClearanceFrame& b) { return a.seconds < b.seconds; }));
+    // The rule on such frames: clear at 0.4 s, touching at the key, the transition no deeper.
+    std::vector<signer::ClearanceFrame> judged(4);
+    const double times[] = {0.4, 0.41, 0.5, 0.9};
+    const int spans[] = {0, 0, -1, 1};
+    const float gaps[] = {20.0f, -15.0f, -16.0f, 40.0f};
+    for (std::size_t i = 0; i < judged.size(); ++i) {
+        judged[i].seconds = times[i];
+        judged[i].span = spans[i];
+        judged[i].clearance.hands.gapMm = gaps[i];
+        judged[i].clearance.body.gapMm = 50.0f;
+    }
+    timeline.spans[0].contact.hands = true;
+    const signer::ClearanceSummary leaving = signer::checkClearance(timeline, judged);
+    for (const signer::ClearanceViolation& v : leaving.violations) EXPECT_FALSE(v.transition) << v.gapMm;
+    // Without the key's frame the same transition would be judged against the clear frame.
+    judged.erase(judged.begin() + 1);
+    const signer::ClearanceSummary nearest = signer::checkClearance(timeline, judged);
+    ASSERT_FALSE(nearest.violations.empty());
+    EXPECT_TRUE(nearest.violations[0].transition);
 }
 
 TEST(Clearance, RoutedFramesOutsideTheVerbSlotsAreTheSameInEveryVersion) {
