@@ -243,7 +243,8 @@ TEST(MotionLimits, DISABLED_EveryStoryFrameKeepsItsWristsAndElbowsWithinTheBodys
 }
 
 // Fails today (issue 21): the wrists peak at 3.3 m/s in the stories (story-10 point at 13.18 s;
-// 4.4 m/s before the signer's detours were kept under 1.2 m/s of their own, 2026-11-26) and
+// `story --check` measured 4.42 m/s in story 03 before the signer's detours were kept under
+// 1.2 m/s of their own, 2026-11-26) and
 // ~4.6 m/s in verbs between far loci (SEND s=-1 o=1).
 // Run with --gtest_also_run_disabled_tests once the timing paces them.
 TEST(MotionLimits, DISABLED_NoWristFasterThanSpec62) {
