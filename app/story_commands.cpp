@@ -77,7 +77,7 @@ void reportClearance(const StoryWorld& world, const Story& story, const Timeline
                       e.seconds);
         return std::string(std::isinf(e.gapMm) ? "-" : text);
     };
-    std::printf("closest approach of the hands (mm; negative: they overlap), every frame at 30 fps:\n");
+    std::printf("closest approach of the hands (mm; negative: they overlap), every frame at 30 fps and each item's first and last key:\n");
     std::vector<std::string> warnings;
     for (VerbVersion v : {VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator, VerbVersion::Uninflected}) {
         std::optional<Timeline> built = timelineUnlessFilesMissing(world, story, v, timing, "checked");

@@ -11,12 +11,25 @@ namespace signstim::signer {
 std::vector<ClearanceFrame> clearanceFrames(const SignerRig& rig, const TimelineClip& clip, double framesPerSecond) {
     const stimuli::Timeline& timeline = clip.timeline();
     const auto total = static_cast<std::uint64_t>(std::floor(clip.durationSeconds() * framesPerSecond + 1e-9)) + 1;
+    // The frames, and the instants where each item's own keys start and end: a transition is
+    // judged against the items at its ends as they are there, not at the nearest frame, which
+    // at the natural pace can be mid-movement (a tap lifted off, hands opening) while the
+    // item's last key has them touching (docs/stories.md, "Clearance").
+    std::vector<double> instants;
+    instants.reserve(total + 2 * timeline.spans.size());
+    for (std::uint64_t f = 0; f < total; ++f) instants.push_back(static_cast<double>(f) / framesPerSecond);
+    for (const stimuli::TimelineSpan& span : timeline.spans)
+        for (const double t : {span.keysStartSeconds, span.keysEndSeconds})
+            if (t >= 0.0 && t <= clip.durationSeconds()) instants.push_back(t);
+    std::sort(instants.begin(), instants.end());
+    instants.erase(std::unique(instants.begin(), instants.end(), [](double a, double b) { return b - a < 1e-9; }),
+                   instants.end());
     std::vector<ClearanceFrame> frames;
-    frames.reserve(total);
+    frames.reserve(instants.size());
     ClipPoser poser(rig, clip);
-    for (std::uint64_t f = 0; f < total; ++f) {
+    for (const double t : instants) {
         ClearanceFrame frame;
-        frame.seconds = static_cast<double>(f) / framesPerSecond;
+        frame.seconds = t;
         SignerPosture posture;
         PoseReport report;
         poser.next(frame.seconds, &posture, &report);

@@ -22,8 +22,9 @@ struct ClearanceFrame {
     int span = -1;
 };
 
-// Every frame of `clip` at `framesPerSecond`, from 0 to its end inclusive, posed as
-// renderClips poses them (ClipPoser).
+// Every frame of `clip` at `framesPerSecond`, from 0 to its end inclusive, and the instants
+// where each item's own keys start and end (TimelineSpan::keysStartSeconds, keysEndSeconds),
+// in time order, posed as renderClips poses them (ClipPoser).
 std::vector<ClearanceFrame> clearanceFrames(const SignerRig& rig, const TimelineClip& clip,
                                             double framesPerSecond = 30.0);
 

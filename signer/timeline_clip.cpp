@@ -11,6 +11,9 @@
 namespace signstim::signer {
 namespace {
 
+// [D] The most a detour's bump adds to the wrist's speed at its peak (see routeTransition).
+constexpr double kDetourPeakSpeedMmPerSecond = 1200.0;
+
 // [D] A glance at a referent: 1.2 m out along its direction, 12° below eye level.
 constexpr double kGazeDistanceMm = 1200.0;
 constexpr double kGazeDropDegrees = 12.0;
@@ -36,6 +39,16 @@ float bump(int shape, double u) {
     const auto [a, b] = kBumpShapes[static_cast<std::size_t>(shape)];
     const double peak = static_cast<double>(a) / (a + b);
     return static_cast<float>(std::pow(u / peak, a) * std::pow((1.0 - u) / (1.0 - peak), b));
+}
+
+// The steepest slope of a bump's shape, |d bump / du| at its maximum (sampled; 1e-3 of u).
+double steepestSlope(int shape) {
+    double steepest = 0.0;
+    for (int i = 0; i < 1000; ++i) {
+        const double u = i / 1000.0;
+        steepest = std::max(steepest, std::abs(static_cast<double>(bump(shape, u + 1e-3)) - bump(shape, u)) / 1e-3);
+    }
+    return steepest;
 }
 
 bool sameTarget(const std::optional<hand::ArmTarget>& a, const std::optional<hand::ArmTarget>& b) {
@@ -220,6 +233,13 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
         trial.push_back({shape, rightMoves ? size * way.first : glm::vec3(0.0f), leftMoves ? size * way.second : glm::vec3(0.0f)});
         return trial;
     };
+    // A bump adds its own speed to the wrist's: size times the shape's steepest slope over the
+    // transition's length. [D] At most kDetourPeakSpeedMmPerSecond, so that a detour in a short
+    // transition (0.1-0.2 s at the natural pace) does not take the wrist past SPEC §6.2's
+    // 2.5 m/s; a bigger one is not tried.
+    const auto largestBump = [&](int shape) {
+        return static_cast<float>(kDetourPeakSpeedMmPerSecond * (endSeconds - startSeconds) / steepestSlope(shape));
+    };
     while (static_cast<int>(detour.bumps.size()) < kMostBumps && shortfall > kShortfallToleranceMm) {
         // Every shape and way at a middle size; then every size of the three most promising.
         struct Trial {
@@ -238,6 +258,7 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
         std::optional<Bump> chosen;
         for (std::size_t t = 0; t < std::min<std::size_t>(3, trials.size()); ++t)
             for (float size : kSizesMm) {
+                if (size > largestBump(trials[t].shape)) break;
                 std::vector<Bump> trial = withBump(trials[t].shape, ways[trials[t].way], size);
                 const float result = follow(trial, nullptr, best);
                 if (result < best) {

@@ -18,7 +18,8 @@
 // by an offset times a bump that is 0, with zero velocity and acceleration, at both ends of the
 // transition, so the keys and the smoothness of the profile are kept. The detour keeps the
 // hands at least kTransitionClearanceMm apart, or as close as they are at the transition's
-// ends when an item there has them touching. A detour depends only on the keys at its ends,
+// ends when an item there has them touching; a bump adds at most kDetourPeakSpeedMmPerSecond
+// (timeline_clip.cpp) to the wrist's speed. A detour depends only on the keys at its ends,
 // so frames outside the verb slots stay the same in every version.
 #include "signer/clip.hpp"
 #include "stimuli/story/timeline.hpp"

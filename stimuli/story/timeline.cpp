@@ -197,22 +197,45 @@ private:
     }
 
     // Stretches a segment's keys in time so that no keyed stretch peaks above the speed limit.
-    void limitSpeed(Segment& segment) const {
+    // `eachStretch` (a lexical sign): only the stretches too fast are slowed, each by what it
+    // needs (a compound's long move, HOME to WORK, no longer slows its taps); a verb's
+    // performance, whose tempo is the version's own, is stretched alike throughout. Both hands
+    // keep together: each interval between neighbouring key times of either hand gets the most
+    // that a keyed stretch spanning it needs.
+    void limitSpeed(Segment& segment, bool eachStretch = false) const {
         if (options_.peakSpeedMmPerSecond <= 0.0) return;
-        double stretch = 1.0;
+        std::vector<double> times;
+        for (const auto& keys : segment.hands)
+            for (const TimelineKey& k : keys) times.push_back(k.timeSeconds);
+        std::sort(times.begin(), times.end());
+        times.erase(std::unique(times.begin(), times.end()), times.end());
+        if (times.size() < 2) return;
+        std::vector<double> factor(times.size() - 1, 1.0);
         for (const auto& keys : segment.hands)
             for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
                 const double dt = keys[k + 1].timeSeconds - keys[k].timeSeconds;
                 if (keys[k].rest || keys[k + 1].rest) continue;
                 const double distance = wristTravelMm(keys[k].pose, keys[k + 1].pose);
                 if (distance <= 0.0) continue;
-                const double needed = kPeakToMean * distance / options_.peakSpeedMmPerSecond;
-                stretch = std::max(stretch, dt > 0.0 ? needed / dt : 1e9);
+                const double needed = dt > 0.0 ? kPeakToMean * distance / options_.peakSpeedMmPerSecond / dt : 1e9;
+                for (std::size_t i = 0; i + 1 < times.size(); ++i)
+                    if (times[i] >= keys[k].timeSeconds && times[i + 1] <= keys[k + 1].timeSeconds)
+                        factor[i] = std::max(factor[i], needed);
             }
-        if (stretch <= 1.0 || stretch >= 1e9) return;
+        const double most = *std::max_element(factor.begin(), factor.end());
+        if (most <= 1.0 || most >= 1e9) return;
+        if (!eachStretch) std::fill(factor.begin(), factor.end(), most);
+        // Time warped piecewise linearly through the key times (past the ends as the end stretch).
+        std::vector<double> warped(times.size(), times.front() * factor.front());
+        for (std::size_t i = 0; i + 1 < times.size(); ++i) warped[i + 1] = warped[i] + (times[i + 1] - times[i]) * factor[i];
+        const auto warp = [&](double t) {
+            if (t >= times.back()) return warped.back() + (t - times.back()) * factor.back();
+            const auto i = static_cast<std::size_t>(std::upper_bound(times.begin(), times.end(), t) - times.begin());
+            return i == 0 ? t * factor.front() : warped[i - 1] + (t - times[i - 1]) * factor[i - 1];
+        };
         for (auto& keys : segment.hands)
-            for (TimelineKey& k : keys) k.timeSeconds *= stretch;
-        segment.durationSeconds *= stretch;
+            for (TimelineKey& k : keys) k.timeSeconds = warp(k.timeSeconds);
+        segment.durationSeconds = warp(segment.durationSeconds);
     }
 
     // Appends `segment` after a transition, records its span and the gaze during it.
@@ -369,7 +392,7 @@ private:
             segment.hands[slot] = expandPasses(sign->keyframes[h], sign->passes, rate);
             segment.durationSeconds = std::max(segment.durationSeconds, segment.hands[slot].back().timeSeconds);
         }
-        limitSpeed(segment);
+        limitSpeed(segment, true);
         return segment;
     }
 

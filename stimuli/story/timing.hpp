@@ -12,12 +12,9 @@
 namespace signstim::stimuli {
 
 struct StoryTiming {
-    // "legacy" unless a story or study says otherwise: the natural preset's faster transitions
-    // still bring the hands into each other (up to ~19 mm) and the body (~6 mm) at a few
-    // transitions that the signer's detours do not yet route around (docs/stories.md, "The
-    // natural preset's open problem"). Opt in with
-    // {"preset": "natural"} or `story --timing natural`.
-    std::string preset = "legacy";         // "natural" | "legacy"
+    // "natural" unless a story or study says otherwise (SPEC §6.3); "legacy" is the timing
+    // before issue 21, kept for comparison studies ({"preset": "legacy"}, `story --timing legacy`).
+    std::string preset = "natural";        // "natural" | "legacy"
     std::map<std::string, double> fields;  // explicit fields by their JSON name (booleans 0/1)
     int line = 0;                          // where the object is written; 0: not given
     bool given() const { return line > 0; }
