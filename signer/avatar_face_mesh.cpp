@@ -45,8 +45,8 @@ struct Layout {
 constexpr float kLidRadiusM = 0.0150f;      // eyeball 12 mm: a closing lid's chord stays outside the cornea
 constexpr float kLidInnerDeg = -100.0f;     // the shell reaches behind the skin at both ends
 constexpr float kLidOuterDeg = 110.0f;
-constexpr float kCornerCentreDeg = 5.0f;    // the opening's centre, a little outward
-constexpr float kCornerHalfDeg = 60.0f;     // half the opening's width (26 mm between the corners)
+constexpr float kCornerCentreDeg = -7.0f;   // the opening's centre, a little inward
+constexpr float kCornerHalfDeg = 50.0f;     // half the opening's width (22 mm between the corners)
 constexpr float kUpperEdgeDeg = 27.0f;      // the upper lid covers the iris's top (iris ~37°)
 constexpr float kLowerEdgeDeg = -29.0f;     // the lower lid at the iris's bottom
 constexpr float kLidTopDeg = 84.0f;         // the shell's ends near the poles (buried in the skin)
@@ -295,6 +295,15 @@ render::Mesh buildFaceMesh(const glm::vec3& headWorld, const glm::vec3& eyeLocal
     const glm::mat3 axesYUp(glm::vec3(1, 0, 0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
     record(Part::Skin, kSkin, 0.0f, [&] {
         mesh.ellipsoid(kSkin, l.skull, {l.radii.x, l.radii.z, l.radii.y}, axesYUp, head, 44, 34, [](glm::vec3& local) {
+            // Cheekbones and the orbits' outer rims: the face's sides beside the eyes come forward
+            // (a face is flatter than an ellipsoid), so in a three-quarter view the far eye lies
+            // inside the outline (issue 21). Only outside the lids (|x| > 46 mm), not over them.
+            if (local.y < 0.0f) {
+                const float ax = std::fabs(local.x);
+                const float beside = smoothstep(0.046f, 0.060f, ax) * (1.0f - smoothstep(0.068f, 0.078f, ax));
+                const float level = smoothstep(-0.065f, -0.030f, local.z) * (1.0f - smoothstep(0.030f, 0.060f, local.z));
+                local.y -= 0.010f * beside * level;
+            }
             // Narrower jaw and chin below the cheekbones.
             const float below = std::clamp(-local.z / 0.110f, 0.0f, 1.0f);
             local.x *= 1.0f - 0.28f * below * below;
@@ -302,7 +311,12 @@ render::Mesh buildFaceMesh(const glm::vec3& headWorld, const glm::vec3& eyeLocal
         });
     });
     const glm::mat3 front(1.0f);
-    record(Part::Nose, kSkin, 0.0f, [&] { mesh.ellipsoid(kSkin, l.nose, {0.0115f, 0.022f, 0.016f}, front, head, 14, 10); });
+    record(Part::Nose, kSkin, 0.0f, [&] {
+        mesh.ellipsoid(kSkin, l.nose, {0.0115f, 0.022f, 0.016f}, front, head, 14, 10);
+        // The bridge between the eyes, standing ~13 mm in front of the corneas: it hides the
+        // far eye in a three-quarter view as a face does (the eyes inside the outline, issue 21).
+        mesh.ellipsoid(kSkin, l.nose + glm::vec3(0.0f, 0.024f, 0.004f), {0.0078f, 0.020f, 0.0085f}, front, head, 12, 10);
+    });
 
     for (int e = 0; e < 2; ++e) {
         const float sx = e == 0 ? 1.0f : -1.0f;
