@@ -507,7 +507,9 @@ render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report) c
     };
     for (std::size_t n = 0; n < scene.nodes.size(); ++n)
         if (scene.nodes[n].parent < 0) visit(static_cast<int>(n), glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
-    if (!nm.face.empty()) pose.morphByName = mapFaceWeights(nm.face, morphTargets_);
+    std::map<std::string, float> face = nm.face;
+    if (posture.gazeMm) addLidFollow(out.gaze.eyePitchDeg + nm.headNodRad / kDeg, morphTargets_, face);
+    if (!face.empty()) pose.morphByName = mapFaceWeights(face, morphTargets_);
     return pose;
 }
 

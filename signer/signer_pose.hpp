@@ -117,6 +117,11 @@ float jutLeanRad(float jutMm, float neckLengthMm);
 std::optional<glm::quat> shoulderRaiseRotation(hand::Side side, const NonManualPosture& nonManual);
 std::optional<glm::quat> torsoRotation(const NonManualPosture& nonManual, float torsoLengthMm);
 
+// The upper lids follow the eyes' vertical turn: down by as much as the eyes look down
+// (adding to eyeBlinkLeft/Right), up a little as they look up (eyeWideLeft/Right), on an
+// avatar with those ARKit shapes. `eyeUpDeg`: the eyes' pitch in the head, + up.
+void addLidFollow(float eyeUpDeg, const std::set<std::string>& targets, std::map<std::string, float>& face);
+
 // [D] A shrug's elevation of the shoulder girdle at full weight: ~12° of the clavicle, about
 // 30 mm at the shoulder joint (within the ~30–40° of clavicular elevation a shrug can reach).
 inline constexpr float kShoulderRaiseMaxDeg = 12.0f;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace signstim::signer {
 namespace {
@@ -73,6 +74,24 @@ std::optional<glm::quat> torsoRotation(const NonManualPosture& nm, float torsoLe
     const float bend = std::asin(std::clamp(nm.torsoShiftMm / torsoLengthMm, -0.5f, 0.5f));
     return glm::normalize(glm::angleAxis(nm.torsoTurnRad, kUp) * glm::angleAxis(nm.torsoLeanRad, kRight) *
                           glm::angleAxis(-bend, kForward));
+}
+
+void addLidFollow(float eyeUpDeg, const std::set<std::string>& targets, std::map<std::string, float>& face) {
+    // [S] The upper lid follows the eye's vertical rotation nearly one to one (lid-eye
+    // coordination: Becker & Fuchs 1988, J Neurophysiol 60:1227). The default signer's blink
+    // carries the lid's edge ~56° (27° above the eye's axis to 29° below, avatar_face_mesh.cpp)
+    // and eyeWide ~20° up.
+    constexpr float kBlinkTravelDeg = 56.0f, kWideTravelDeg = 20.0f;
+    const float down = std::clamp(-eyeUpDeg / kBlinkTravelDeg, 0.0f, 1.0f);
+    const float up = std::clamp(eyeUpDeg / kWideTravelDeg, 0.0f, 1.0f) * 0.5f;  // the lid lags looking up
+    for (const char* side : {"Left", "Right"}) {
+        for (const auto& [shape, amount] : {std::pair<std::string, float>{std::string("eyeBlink") + side, down},
+                                            std::pair<std::string, float>{std::string("eyeWide") + side, up}}) {
+            if (amount <= 0.0f || !targets.count(shape)) continue;
+            float& w = face[shape];
+            w = std::min(1.0f, w + amount);
+        }
+    }
 }
 
 hand::ArmModel SignerRig::raisedArm(hand::Side side, const NonManualPosture& nm) const {
