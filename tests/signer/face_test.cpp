@@ -6,6 +6,7 @@
 #include "signer/clip.hpp"
 #include "signer/signer_pose.hpp"
 #include "signer/timeline_clip.hpp"
+#include "renderer/gltf_loader.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -97,6 +98,24 @@ TEST(FaceTargets, DefaultSignerHasEveryArkitShapeOnItsFaceAndEachMovesIt) {
             EXPECT_GT(rightX, 3.0f * leftX) << name;
         }
     }
+}
+
+TEST(FaceTargets, CommittedSignerKeepsEveryTargetThroughItsSparseStorage) {
+    // scenes/avatar/signer.glb stores the face's targets sparse (renderer/gltf_writer.cpp):
+    // loaded back, every displacement is the builder's, bit for bit.
+    const render::Scene loaded = render::loadGltf(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/avatar/signer.glb");
+    const render::Mesh& built = faceMesh(avatar());
+    const render::Mesh& read = faceMesh(loaded);
+    ASSERT_EQ(read.targetNames, built.targetNames);
+    ASSERT_EQ(read.primitives.size(), built.primitives.size());
+    for (std::size_t p = 0; p < built.primitives.size(); ++p)
+        for (std::size_t k = 0; k < built.targetNames.size(); ++k) {
+            EXPECT_EQ(read.primitives[p].targets[k].position, built.primitives[p].targets[k].position) << built.targetNames[k];
+            const auto& n = built.primitives[p].targets[k].normal;
+            if (!n.empty()) {
+                EXPECT_EQ(read.primitives[p].targets[k].normal, n) << built.targetNames[k];
+            }
+        }
 }
 
 TEST(FaceTargets, BlinkBringsTheUpperLidsEdgeDownToTheLowerLids) {
