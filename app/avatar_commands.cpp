@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <sstream>
 #include <string>
 
 namespace signstim::app {
@@ -156,6 +157,7 @@ void registerAvatarCommands(Commands& commands) {
         AvatarSource source;
         std::string right, left, rightWrist, leftWrist, rightRotation, leftRotation, gaze, out, size = "640x480",
                                                                                           shapesFile, device;
+        std::string nonManual, camera = "waist-up";
         std::uint32_t msaa = 4;
     };
     auto p = std::make_shared<PoseOptions>();
@@ -171,6 +173,12 @@ void registerAvatarCommands(Commands& commands) {
                      "default palm-forward, fingers-up orientation");
     pose->add_option("--left-rotation", p->leftRotation, "The same for the left hand");
     pose->add_option("--gaze", p->gaze, "Look at x,y,z in mm (default: straight ahead)");
+    pose->add_option("--nonmanual", p->nonManual,
+                     "Face, head, torso and shoulders: CHANNEL=VALUE,... with the channels and units of the "
+                     "non-manual seam (docs/avatar-face.md): browInnerUp=1,jawOpen=0.5,head.nod=0.2,torso.turn=-0.3");
+    pose->add_option("--camera", p->camera, "Camera preset: waist-up or face (close-up)")
+        ->check(CLI::IsMember({"waist-up", "face"}))
+        ->capture_default_str();
     pose->add_option("--out", p->out, "Output image (.png)")->required();
     pose->add_option("--size", p->size, "Image size WxH");
     pose->add_option("--shapes", p->shapesFile, "Handshape file (default: SCENES/handshapes.json)");
@@ -202,11 +210,21 @@ void registerAvatarCommands(Commands& commands) {
             posture.leftWrist = left;
         }
         if (!p->gaze.empty()) posture.gazeMm = bodyFromSigningSpace(parseTriple(p->gaze, "--gaze"));
+        std::stringstream channels(p->nonManual);
+        for (std::string item; std::getline(channels, item, ',');) {
+            const std::size_t eq = item.find('=');
+            if (eq == std::string::npos || eq == 0)
+                throw commandLineError("--nonmanual", "'" + item + "' is not CHANNEL=VALUE");
+            const float value = parseNumber(item.substr(eq + 1), "--nonmanual " + item.substr(0, eq));
+            if (!setNonManualChannel(posture.nonManual, item.substr(0, eq), value))
+                throw commandLineError("--nonmanual", "unknown channel '" + item.substr(0, eq) + "'");
+        }
         PoseReport report;
         renderToFile(scene,
                      [&](int handle) {
                          return postureFrame(scene, rig, handle, posture,
-                                             static_cast<float>(width) / static_cast<float>(height), &report);
+                                             static_cast<float>(width) / static_cast<float>(height), &report,
+                                             *parseCameraFraming(p->camera));
                      },
                      width, height, p->device, p->msaa, p->out);
         reportArm("right", report.right);

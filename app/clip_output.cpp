@@ -40,6 +40,7 @@ std::uint64_t renderClipToOutput(const ClipOutput& output, const signer::Signer&
     const int handle = renderer.addScene(signer.avatar());
     signer::ClipRenderOptions options;
     options.framesPerSecond = output.frameRate.value();
+    options.framing = output.framing;
     render::VideoOptions video;
     video.frameRate = output.frameRate;
     const bool still = output.kind == render::OutputKind::Image;

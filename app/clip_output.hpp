@@ -10,6 +10,7 @@
 #include "renderer/frame_sink.hpp"
 #include "renderer/video_encoder.hpp"
 #include "renderer/renderer.hpp"
+#include "signer/avatar_render.hpp"
 #include "signer/clip.hpp"
 #include "signer/signer.hpp"
 
@@ -27,6 +28,7 @@ struct ClipOutput {
     std::uint32_t msaa = 4;
     std::string device;
     bool quiet = false;
+    signer::CameraFraming framing = signer::CameraFraming::WaistUp;  // --camera
 };
 
 // Step 1: throws InputError naming the flag (exit 1) or the folder (exit 2).

@@ -39,6 +39,7 @@ struct StoryOptions {
     std::string size = "640x480";
     std::string fps = "30";
     std::uint32_t msaa = 4;
+    std::string camera = "waist-up";
     std::string device;
     double rate = 1.0;
     std::string timing;  // --timing: a preset replacing the story's `timing`
@@ -142,7 +143,8 @@ TimelineOptions storyTiming(const StoryOptions& o, const Story& story, std::stri
 }
 
 void renderStory(const StoryOptions& o, const StoryWorld& world, const Story& story, VerbVersion version) {
-    const ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
+    ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
+    output.framing = *signer::parseCameraFraming(o.camera);
     const TimelineOptions timing = storyTiming(o, story);
     const Signer signer(world.scenes);
     const TimelineClip clip(signer.rig(), buildTimeline(story, version, world.sources(story), timing));
@@ -187,6 +189,11 @@ void registerStoryCommands(Commands& commands) {
     story->add_option("--size", o->size, "Image size WxH (even for .mp4)")->capture_default_str();
     story->add_option("--fps", o->fps, "Frame rate: 30, 25, 30000/1001 ...")->capture_default_str();
     story->add_option("--msaa", o->msaa, "Multisampling: 1 or 4")->capture_default_str();
+    story->add_option("--camera", o->camera,
+                      "Camera preset: waist-up (the signing space) or face (a close-up of the head, neck and "
+                      "shoulders, for the non-manuals)")
+        ->check(CLI::IsMember({"waist-up", "face"}))
+        ->capture_default_str();
     story->add_option("--device", o->device, "Vulkan device: name substring or index (see `signstim devices`)");
     story->add_option("--rate", o->rate,
                       "Signing speed relative to the timing model (0.1 to 4; 1: ~1.7 signs/s, docs/stories.md); "

@@ -105,6 +105,40 @@ private:
         return static_cast<int>(doc_["accessors"].size()) - 1;
     }
 
+    int addMorphAccessor(const std::vector<glm::vec3>& d, bool minMax) {
+        std::vector<std::uint32_t> moved;
+        std::vector<float> values;
+        for (std::size_t v = 0; v < d.size(); ++v)
+            if (d[v] != glm::vec3(0.0f)) {
+                moved.push_back(static_cast<std::uint32_t>(v));
+                values.insert(values.end(), {d[v].x, d[v].y, d[v].z});
+            }
+        if (moved.size() * 16 >= d.size() * 12) {  // sparse would be larger: dense
+            std::vector<float> dense;
+            for (const glm::vec3& x : d) dense.insert(dense.end(), {x.x, x.y, x.z});
+            return addAccessor(dense, kFloat, 3, "VEC3", 34962, minMax);
+        }
+        // No bufferView: zeros, overridden by the sparse values (none when nothing moves).
+        json a = {{"componentType", kFloat}, {"count", d.size()}, {"type", "VEC3"}};
+        if (minMax && !d.empty()) {
+            glm::vec3 lo(0.0f), hi(0.0f);  // some element is an implicit zero
+            for (const glm::vec3& x : d) {
+                lo = glm::min(lo, x);
+                hi = glm::max(hi, x);
+            }
+            a["min"] = {lo.x, lo.y, lo.z};
+            a["max"] = {hi.x, hi.y, hi.z};
+        }
+        if (!moved.empty()) {
+            a["sparse"] = {{"count", moved.size()},
+                           {"indices", {{"bufferView", addView(moved.data(), moved.size() * sizeof(std::uint32_t))},
+                                        {"componentType", kUnsignedInt}}},
+                           {"values", {{"bufferView", addView(values.data(), values.size() * sizeof(float))}}}};
+        }
+        doc_["accessors"].push_back(a);
+        return static_cast<int>(doc_["accessors"].size()) - 1;
+    }
+
     void writeImagesAndTextures() {
         for (const ImageData& image : scene_.images) {
             Image pixels;
@@ -192,7 +226,9 @@ private:
         }
     }
 
-    // Dense POSITION (with the min/max glTF requires) and NORMAL displacements per target.
+    // POSITION (with the min/max glTF requires) and NORMAL displacements per target: sparse
+    // (glTF 2.0 §3.6.2.3) where most vertices do not move — a face's targets move a few
+    // hundred of a body's vertices — dense otherwise.
     json morphTargets(const Primitive& p) {
         json targets = json::array();
         for (const MorphTarget& target : p.targets) {
@@ -201,10 +237,8 @@ private:
                 if (attribute->empty()) continue;
                 if (attribute->size() != p.vertices.size())
                     throw std::invalid_argument("writeGltf: a morph target does not cover every vertex");
-                std::vector<float> values;
-                for (const glm::vec3& d : *attribute) values.insert(values.end(), {d.x, d.y, d.z});
                 const bool position = attribute == &target.position;
-                out[position ? "POSITION" : "NORMAL"] = addAccessor(values, kFloat, 3, "VEC3", 34962, position);
+                out[position ? "POSITION" : "NORMAL"] = addMorphAccessor(*attribute, position);
             }
             targets.push_back(out);
         }

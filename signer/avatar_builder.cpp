@@ -60,7 +60,10 @@ std::vector<render::Material> avatarMaterials() {
             make("lips", {0.36f, 0.12f, 0.10f}, 0.5f),
             // Paler and pinker than the skin, a little glossy: the back of a finger reads
             // as the back (from the front a curled finger's back otherwise looks like a palm).
-            make("nail", {0.72f, 0.47f, 0.42f}, 0.45f)};
+            make("nail", {0.72f, 0.47f, 0.42f}, 0.45f),
+            make("pupil", {0.022f, 0.015f, 0.011f}, 0.3f),
+            // The inside of the mouth seen between parted lips: dark, unlit-looking.
+            make("mouth", {0.045f, 0.012f, 0.012f}, 0.9f)};
 }
 
 std::uint8_t srgbByte(float linear) {
@@ -110,9 +113,9 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
     const int neck = sk.add("neck", chest, {0.0f, 0.15f, -0.01f});
     const int head = sk.add("head", neck, {0.0f, 0.09f, 0.01f});
     const glm::vec3 headWorld = d.chestM + glm::vec3(0.0f, 0.24f, 0.0f);
-    // The eyeballs stand 4 mm proud of the face (skin at z ≈ 0.098 here), so ~18 mm of each
-    // shows: open eyes whose irises turn with the gaze. Set 11 mm deeper they read as closed.
-    const glm::vec3 eyeLocal{0.032f, 0.115f, 0.089f};
+    // The eyeballs' fronts lie at the face's skin (z ≈ 0.098 here) under lids that stand ~3 mm
+    // proud of it (avatar_face_mesh.cpp), inside the head's outline in profile (issue 21).
+    const glm::vec3 eyeLocal{0.032f, 0.115f, 0.086f};
     const int leftEye = sk.add("leftEye", head, eyeLocal);
     const int rightEye = sk.add("rightEye", head, {-eyeLocal.x, eyeLocal.y, eyeLocal.z});
 
@@ -232,18 +235,11 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
         }
         mesh.tube(kSkin, rings, 20, 0.0f, 0.0f);
     }
-    // Head: a slightly tapered ellipsoid; face features signers read (eyes, brows, mouth).
+    // Head: the hair cap, the eyeballs and the ears here; the face (skin, brows, lids, nose,
+    // mouth) is a mesh of its own with the morph targets (avatar_face_mesh.cpp).
     {
         const glm::vec3 c = headWorld + glm::vec3(0.0f, 0.10f, 0.012f);  // skull centre
         const glm::mat3 axesYUp(glm::vec3(1, 0, 0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
-        // Ellipsoid axes: u = x (width), v = -z, w = y (height): rings stack along +y.
-        mesh.ellipsoid(kSkin, c, {0.078f, 0.095f, 0.110f}, axesYUp, Weights(head), 28, 22,
-                       [](glm::vec3& local) {
-                           // Narrower jaw and chin below the cheekbones.
-                           const float below = std::clamp(-local.z / 0.110f, 0.0f, 1.0f);
-                           local.x *= 1.0f - 0.28f * below * below;
-                           local.y *= 1.0f - 0.12f * below * below;
-                       });
         const glm::mat3 front(glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1));
         // Hair: a cap over the top and back, leaving the forehead and face clear.
         mesh.ellipsoid(kHair, c + glm::vec3(0.0f, 0.022f, -0.016f), {0.083f, 0.098f, 0.100f},
@@ -254,28 +250,17 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
             const float sx = e == 0 ? 1.0f : -1.0f;
             const int eyeBone = e == 0 ? leftEye : rightEye;
             const glm::vec3 eye = headWorld + glm::vec3(sx * eyeLocal.x, eyeLocal.y, eyeLocal.z);
-            mesh.ellipsoid(kEyeWhite, eye, {0.0125f, 0.0125f, 0.0125f}, front, Weights(eyeBone), 16, 10);
-            mesh.ellipsoid(kIris, eye + glm::vec3(0.0f, 0.0f, 0.0095f), {0.0068f, 0.0068f, 0.0042f},
+            const float r = kEyeballRadiusM;
+            mesh.ellipsoid(kEyeWhite, eye, glm::vec3(r), front, Weights(eyeBone), 16, 10);
+            mesh.ellipsoid(kIris, eye + glm::vec3(0.0f, 0.0f, 0.76f * r), {0.54f * r, 0.54f * r, 0.33f * r},
                            front, Weights(eyeBone), 16, 8);
             // Pupil: dark, in front of the iris, turning with it.
-            mesh.ellipsoid(kHair, eye + glm::vec3(0.0f, 0.0f, 0.0121f), {0.0029f, 0.0029f, 0.0018f}, front,
+            mesh.ellipsoid(kPupil, eye + glm::vec3(0.0f, 0.0f, 0.97f * r), {0.23f * r, 0.23f * r, 0.14f * r}, front,
                            Weights(eyeBone), 12, 6);
-            // Brow: a dark, slightly arched bar above the eye.
-            const glm::mat3 browAxes(glm::normalize(glm::vec3(1, sx * -0.12f, 0)), glm::vec3(0, 1, 0),
-                                     glm::vec3(0, 0, 1));
-            mesh.ellipsoid(kHair, eye + glm::vec3(sx * 0.002f, 0.022f, 0.0f), {0.019f, 0.0042f, 0.006f},
-                           glm::mat3(glm::normalize(glm::vec3(1, 0, sx * -0.25f)), browAxes[1],
-                                     glm::normalize(glm::cross(glm::normalize(glm::vec3(1, 0, sx * -0.25f)), browAxes[1]))),
-                           Weights(head), 12, 8);
             // Ear.
             mesh.ellipsoid(kSkin, c + glm::vec3(sx * 0.077f, -0.012f, -0.004f), {0.010f, 0.027f, 0.016f},
                            front, Weights(head), 12, 8);
         }
-        // Nose and mouth.
-        mesh.ellipsoid(kSkin, headWorld + glm::vec3(0.0f, 0.085f, 0.097f), {0.0115f, 0.022f, 0.016f}, front,
-                       Weights(head), 14, 10);
-        mesh.ellipsoid(kLips, headWorld + glm::vec3(0.0f, 0.047f, 0.090f), {0.024f, 0.0068f, 0.0095f}, front,
-                       Weights(head), 18, 8);
     }
     // Arms: one continuous sleeve per arm from a round shoulder to the wrist cuff; the skin
     // blends across the elbow and spreads the forearm's twist over two helper bones.
@@ -345,6 +330,7 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
     body.name = "signer";
     body.primitives = mesh.finish();
     scene.meshes.push_back(std::move(body));
+    scene.meshes.push_back(buildFaceMesh(headWorld, eyeLocal, head));
     scene.materials = avatarMaterials();
     addSkinToneTexture(scene);
     scene.skins.push_back(std::move(skin));
@@ -353,6 +339,12 @@ render::Scene buildDefaultAvatar(const AvatarDimensions& d) {
     meshNode.mesh = 0;
     meshNode.skin = 0;
     scene.nodes.push_back(meshNode);
+    scene.roots.push_back(static_cast<int>(scene.nodes.size()) - 1);
+    render::Node faceNode;
+    faceNode.name = "signerFace";
+    faceNode.mesh = 1;
+    faceNode.skin = 0;
+    scene.nodes.push_back(faceNode);
     scene.roots.push_back(static_cast<int>(scene.nodes.size()) - 1);
     return scene;
 }

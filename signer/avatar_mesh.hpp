@@ -182,6 +182,33 @@ public:
         tube(material, rings, segments, gap, gap);
     }
 
+    // A patch from rows of points (each row the same length), every triangle turned to face
+    // away from `inside` (a shell around a point: the eyelids).
+    void grid(int material, const std::vector<std::vector<glm::vec3>>& rows, const Weights& weights,
+              glm::vec3 inside) {
+        render::Primitive& p = primitive(material);
+        const auto base = static_cast<std::uint32_t>(p.vertices.size());
+        const auto n = static_cast<std::uint32_t>(rows.front().size());
+        for (const auto& row : rows)
+            for (const glm::vec3& pos : row) {
+                render::Vertex v;
+                v.position = pos;
+                weights.toVertex(v);
+                p.vertices.push_back(v);
+            }
+        const auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+            const glm::vec3 pa = p.vertices[a].position, pb = p.vertices[b].position, pc = p.vertices[c].position;
+            if (glm::dot(glm::cross(pb - pa, pc - pa), (pa + pb + pc) / 3.0f - inside) < 0.0f) std::swap(b, c);
+            p.indices.insert(p.indices.end(), {a, b, c});
+        };
+        for (std::uint32_t i = 0; i + 1 < rows.size(); ++i)
+            for (std::uint32_t j = 0; j + 1 < n; ++j) {
+                const std::uint32_t a = base + i * n + j, b = a + 1, c = a + n, d = c + 1;
+                add(a, b, c);
+                add(b, d, c);
+            }
+    }
+
     std::vector<render::Primitive> finish() {
         std::vector<render::Primitive> out;
         for (auto& [material, p] : primitives_) {
@@ -191,7 +218,7 @@ public:
         return out;
     }
 
-private:
+    // Area-weighted vertex normals of the triangles (also of a morph target's shape).
     static void computeNormals(render::Primitive& p) {
         std::vector<glm::vec3> normals(p.vertices.size(), glm::vec3(0.0f));
         for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
@@ -206,11 +233,21 @@ private:
             p.vertices[i].normal = len > 1e-12f ? normals[i] / len : glm::vec3(0, 0, 1);
         }
     }
+private:
     std::map<int, render::Primitive> primitives_;
 };
 
 // The avatar's materials, in the order of avatarMaterials() (avatar_builder.cpp).
-enum MaterialId { kSkin = 0, kTop, kEyeWhite, kIris, kHair, kLips, kNail };
+enum MaterialId { kSkin = 0, kTop, kEyeWhite, kIris, kHair, kLips, kNail, kPupil, kMouth };
+
+// The default signer's face (signer/avatar_face_mesh.cpp): the head's skin, brows, eyelids and
+// lashes, nose, lips, the mouth's dark opening and the tongue, as a mesh of its own skinned to
+// the head bone with the morph targets of faceTargetNames() (signer/avatar_face.hpp). The
+// eyeballs (turned by the eye bones) are not part of it. Positions in the rest pose, metres:
+// `headWorld` the head bone, `eyeLocal` the left eye bone from it (the right mirrored).
+render::Mesh buildFaceMesh(const glm::vec3& headWorld, const glm::vec3& eyeLocal, int headBone);
+// The face's geometry constants shared with avatar_builder.cpp.
+inline constexpr float kEyeballRadiusM = 0.012f;
 
 struct HandBones {
     int hand = -1;

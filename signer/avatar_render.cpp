@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include <vector>
@@ -31,6 +32,25 @@ render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect) {
     camera.target = chestWorld + glm::vec3(0.0f, 0.06f, 0.0f);
     camera.eye = camera.target + glm::vec3(0.0f, 0.03f, distance);
     return camera;
+}
+
+render::Camera faceCloseUpCamera(const glm::vec3& eyesWorld, float aspect) {
+    render::Camera camera;
+    camera.verticalFovDegrees = 30.0f;
+    // Visible height ≈ 0.36 m: from above the hair to the collarbones, so that a nod, a tilt
+    // and a shrug stay in the frame (narrow frames: the same width).
+    const float height = aspect >= 1.0f ? 0.36f : 0.36f / aspect * 0.8f;
+    const float distance = 0.5f * height / std::tan(0.5f * camera.verticalFovDegrees * 3.14159265f / 180.0f);
+    camera.target = eyesWorld + glm::vec3(0.0f, -0.07f, 0.0f);
+    camera.eye = camera.target + glm::vec3(0.0f, 0.0f, distance);
+    camera.nearPlane = std::min(camera.nearPlane, 0.05f);
+    return camera;
+}
+
+std::optional<CameraFraming> parseCameraFraming(const std::string& name) {
+    if (name == "waist-up") return CameraFraming::WaistUp;
+    if (name == "face") return CameraFraming::Face;
+    return std::nullopt;
 }
 
 render::Frame galleryFrame(const SignerRig& rig, int sceneHandle,
@@ -73,14 +93,20 @@ render::Frame galleryFrame(const SignerRig& rig, int sceneHandle,
 }
 
 render::Frame postureFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,
-                           const SignerPosture& posture, float aspect, PoseReport* report) {
+                           const SignerPosture& posture, float aspect, PoseReport* report, CameraFraming framing) {
     render::View view;
     view.scene = sceneHandle;
     view.pose = rig.pose(posture, report);
     std::vector<glm::mat4> world;
     render::computeWorldTransforms(avatar, view.pose, world);
     const glm::vec3 left = world[avatar.findNode("leftUpperArm")][3], right = world[avatar.findNode("rightUpperArm")][3];
-    view.camera = waistUpCamera(0.5f * (left + right) - glm::vec3(0.0f, 0.13f, 0.0f), aspect);
+    const glm::vec3 chest = 0.5f * (left + right) - glm::vec3(0.0f, 0.13f, 0.0f);
+    if (framing == CameraFraming::Face) {
+        // Between the eyes: the gaze model's eyes (the eye bones where the avatar has them).
+        view.camera = faceCloseUpCamera(rig.worldFromBodyMm(rig.gaze().eyesMm), aspect);
+    } else {
+        view.camera = waistUpCamera(chest, aspect);
+    }
     render::Frame frame;
     frame.views.push_back(std::move(view));
     return frame;

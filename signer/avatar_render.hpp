@@ -8,6 +8,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <string>
 
 namespace signstim::signer {
 
@@ -21,6 +23,14 @@ render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t
 
 // Waist-up view of a signer whose chest is at `chestWorld` (metres), for aspect w/h.
 render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect);
+// Face close-up (issue 23 §6): the head, neck and the tops of the shoulders, centred between
+// the eyes at `eyesWorld` (metres), for a study of the face (non-manuals, mouthing).
+render::Camera faceCloseUpCamera(const glm::vec3& eyesWorld, float aspect);
+
+// The camera presets of the signer's frames (`--camera waist-up|face`).
+enum class CameraFraming { WaistUp, Face };
+// "waist-up" / "face" -> the preset; empty when the name is none of them.
+std::optional<CameraFraming> parseCameraFraming(const std::string& name);
 
 // Where the gallery camera looks from: an orbit around the presented right hand, degrees.
 // Azimuth turns about the vertical (+90 = from the thumb side, -90 = from the little-finger
@@ -36,9 +46,11 @@ render::Frame galleryFrame(const SignerRig& rig, int sceneHandle,
                            const stimuli::HandshapeLibrary& library, std::uint32_t columns,
                            const GalleryView& view = {});
 
-// The signer in one posture, waist-up.
+// The signer in one posture, framed by `framing` on the rest pose (the camera does not follow
+// the posture).
 render::Frame postureFrame(const render::Scene& avatar, const SignerRig& rig, int sceneHandle,
-                           const SignerPosture& posture, float aspect, PoseReport* report = nullptr);
+                           const SignerPosture& posture, float aspect, PoseReport* report = nullptr,
+                           CameraFraming framing = CameraFraming::WaistUp);
 
 // The default signer committed in scenes/ (scenes/avatar/signer.glb).
 std::filesystem::path defaultAvatarPath(const std::filesystem::path& scenesDir);

@@ -23,7 +23,7 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
     const render::RendererOptions& ro = renderer.options();
     const float aspect = (static_cast<float>(ro.width) / static_cast<float>(options.columns)) /
                          (static_cast<float>(ro.height) / static_cast<float>(options.rows));
-    const render::Frame restFrame = postureFrame(avatar, rig, sceneHandle, SignerPosture{}, aspect);
+    const render::Frame restFrame = postureFrame(avatar, rig, sceneHandle, SignerPosture{}, aspect, nullptr, options.framing);
     const render::Camera camera = restFrame.views.front().camera;
 
     std::vector<ClipPoser> posers;
@@ -62,7 +62,10 @@ std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const ren
 namespace {
 
 bool samePose(const render::Pose& a, const render::Pose& b) {
-    if (a.local.size() != b.local.size() || a.useRestMatrix != b.useRestMatrix) return false;
+    // The face too: a frame is shared only when the skeleton and the morph weights agree.
+    if (a.local.size() != b.local.size() || a.useRestMatrix != b.useRestMatrix || a.morphByName != b.morphByName ||
+        a.morphWeights != b.morphWeights)
+        return false;
     for (std::size_t i = 0; i < a.local.size(); ++i) {
         const render::Trs& x = a.local[i];
         const render::Trs& y = b.local[i];
@@ -76,7 +79,8 @@ bool samePose(const render::Pose& a, const render::Pose& b) {
 SharedRenderStats renderClipsSharingFrames(render::Renderer& renderer, int sceneHandle, const render::Scene& avatar,
                                            const SignerRig& rig, const std::vector<const Clip*>& clips,
                                            double framesPerSecond, const std::vector<render::FrameSink*>& sinks,
-                                           const std::function<void(std::uint64_t, std::uint64_t)>& progress) {
+                                           const std::function<void(std::uint64_t, std::uint64_t)>& progress,
+                                           CameraFraming framing) {
     SharedRenderStats stats;
     if (clips.empty()) return stats;
     if (sinks.size() != clips.size()) throw std::invalid_argument("renderClipsSharingFrames: one sink per clip");
@@ -87,7 +91,8 @@ SharedRenderStats renderClipsSharingFrames(render::Renderer& renderer, int scene
 
     const render::RendererOptions& ro = renderer.options();
     const float aspect = static_cast<float>(ro.width) / static_cast<float>(ro.height);
-    const render::Camera camera = postureFrame(avatar, rig, sceneHandle, SignerPosture{}, aspect).views.front().camera;
+    const render::Camera camera =
+        postureFrame(avatar, rig, sceneHandle, SignerPosture{}, aspect, nullptr, framing).views.front().camera;
 
     std::vector<ClipPoser> posers;
     for (const Clip* clip : clips) posers.emplace_back(rig, *clip);

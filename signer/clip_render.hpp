@@ -2,6 +2,7 @@
 // Clips (signer/clip.hpp) to frames of the signer. Several clips can be shown side by side in
 // one frame (SPEC §4.3): every view samples the same clip time, so the panels stay in sync; a
 // shorter clip holds its last posture.
+#include "signer/avatar_render.hpp"
 #include "signer/clip.hpp"
 #include "renderer/frame_sink.hpp"
 #include "renderer/renderer.hpp"
@@ -16,11 +17,12 @@ namespace signstim::signer {
 struct ClipRenderOptions {
     double framesPerSecond = 30.0;
     std::uint32_t columns = 1, rows = 1;  // grid of the views
+    CameraFraming framing = CameraFraming::WaistUp;  // the camera preset (avatar_render.hpp)
 };
 
 // Renders `clips` (verb clips, story timelines) side by side (one view each, labelled by `labels` when given) into `sink`,
 // one frame per 1/fps from 0 to the longest clip's end inclusive. The camera is the
-// waist-up view of the rest pose, fixed for the whole clip. `progress(done, total)` is called
+// options' preset (waist-up or the face) on the rest pose, fixed for the whole clip. `progress(done, total)` is called
 // after each frame. Returns the number of frames.
 std::uint64_t renderClips(render::Renderer& renderer, int sceneHandle, const render::Scene& avatar,
                           const SignerRig& rig, const std::vector<const Clip*>& clips,
@@ -45,6 +47,7 @@ struct SharedRenderStats {
 SharedRenderStats renderClipsSharingFrames(render::Renderer& renderer, int sceneHandle, const render::Scene& avatar,
                                            const SignerRig& rig, const std::vector<const Clip*>& clips,
                                            double framesPerSecond, const std::vector<render::FrameSink*>& sinks,
-                                           const std::function<void(std::uint64_t, std::uint64_t)>& progress = {});
+                                           const std::function<void(std::uint64_t, std::uint64_t)>& progress = {},
+                                           CameraFraming framing = CameraFraming::WaistUp);
 
 }  // namespace signstim::signer

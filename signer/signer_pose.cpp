@@ -1,5 +1,6 @@
 #include "signer/signer_pose.hpp"
 
+#include "signer/avatar_face.hpp"
 #include "stimuli/json_source.hpp"
 
 #include "common/error.hpp"
@@ -267,6 +268,13 @@ SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, con
     gaze_.eyesMm = (position("head") - bodyOriginM_) * kMToMm + glm::vec3(0.0f, 115.0f, 78.0f);
     if (bones_.count("leftEye") && bones_.count("rightEye"))
         gaze_.eyesMm = (0.5f * (position("leftEye") + position("rightEye")) - bodyOriginM_) * kMToMm;
+    // What the non-manuals move (signer_pose_nonmanual.cpp).
+    morphTargets_ = morphTargetNames(scene);
+    for (hand::Side side : {hand::Side::Right, hand::Side::Left})
+        if (bones_.count(sideName(side) + "Shoulder"))
+            shoulderBoneMm_[side == hand::Side::Right ? 0 : 1] = (position(sideName(side) + "Shoulder") - bodyOriginM_) * kMToMm;
+    neckLengthMm_ = std::max(10.0f, glm::length(position("head") - position("neck")) * kMToMm);
+    torsoLengthMm_ = std::max(50.0f, glm::length(0.5f * (leftShoulder + rightShoulder) - position("spine")) * kMToMm);
 }
 
 void SignerRig::measureRestPose(const std::vector<glm::mat4>& restWorld) {
@@ -395,7 +403,7 @@ hand::ArmPose SignerRig::solveArm(hand::Side side, const SignerPosture& posture)
     hand::ArmSolveOptions options;
     options.previousElbowDirection = right ? posture.rightElbowHint : posture.leftElbowHint;
     options.maxSwivelStepDeg = kElbowHintWindowDeg;
-    return hand::solveArm(arm(side), target, options);
+    return hand::solveArm(raisedArm(side, posture.nonManual), target, options);
 }
 
 hand::GazePose SignerRig::solveGazeAt(const SignerPosture& posture) const {
@@ -431,12 +439,39 @@ render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report) c
         for (int b = 0; b < hand::kBodyCount; ++b)
             canonical[std::string(info[b].name)] = arm.hand * handPose.bodies[b].rotation;
     }
-    if (posture.gazeMm) {
-        out.gaze = solveGazeAt(posture);
-        canonical["neck"] = out.gaze.neck;
-        canonical["head"] = out.gaze.head;
-        canonical["leftEye"] = out.gaze.head * out.gaze.eyes;
-        canonical["rightEye"] = out.gaze.head * out.gaze.eyes;
+    // Head and neck: the gaze's turn, then the non-manual nod, shake and tilt in the head's own
+    // frame (the neck takes half) and the jut (the neck leans, the head keeps its turn). The
+    // eyes keep the gaze's target in the body frame: they counter-turn a nod or shake as the
+    // vestibulo-ocular reflex does, so a signer shaking the head keeps eye contact.
+    const NonManualPosture& nm = posture.nonManual;
+    const bool headMoves = nm.headNodRad != 0.0f || nm.headShakeRad != 0.0f || nm.headTiltRad != 0.0f || nm.headJutMm != 0.0f;
+    if (posture.gazeMm || headMoves) {
+        glm::quat neck(1.0f, 0.0f, 0.0f, 0.0f), head(1.0f, 0.0f, 0.0f, 0.0f);
+        if (posture.gazeMm) {
+            out.gaze = solveGazeAt(posture);
+            neck = out.gaze.neck;
+            head = out.gaze.head;
+            canonical["leftEye"] = out.gaze.head * out.gaze.eyes;
+            canonical["rightEye"] = out.gaze.head * out.gaze.eyes;
+        }
+        if (headMoves) {
+            const glm::quat turn = headNonManualRotation(nm);
+            neck = glm::normalize(neck * glm::slerp(glm::quat(1.0f, 0.0f, 0.0f, 0.0f), turn, 0.5f) *
+                                  glm::angleAxis(jutLeanRad(nm.headJutMm, neckLengthMm_), glm::vec3(1.0f, 0.0f, 0.0f)));
+            head = glm::normalize(head * turn);
+        }
+        canonical["neck"] = neck;
+        canonical["head"] = head;
+    }
+    for (hand::Side side : {hand::Side::Right, hand::Side::Left})
+        if (const auto raise = shoulderRaiseRotation(side, nm)) canonical[sideName(side) + "Shoulder"] = *raise;
+    // The torso carries everything above it (arms and hands included: the signing space is
+    // the chest's, so contacts with the body and the hands' clearance hold as solved).
+    if (const auto torso = torsoRotation(nm, torsoLengthMm_)) {
+        for (auto& entry : canonical) entry.second = glm::normalize(*torso * entry.second);
+        const bool chest = bones_.count("chest") > 0;
+        canonical["spine"] = chest ? glm::slerp(glm::quat(1.0f, 0.0f, 0.0f, 0.0f), *torso, 0.5f) : *torso;
+        if (chest) canonical["chest"] = *torso;
     }
 
     // Desired world rotation per posed node.
@@ -472,6 +507,9 @@ render::Pose SignerRig::pose(const SignerPosture& posture, PoseReport* report) c
     };
     for (std::size_t n = 0; n < scene.nodes.size(); ++n)
         if (scene.nodes[n].parent < 0) visit(static_cast<int>(n), glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+    std::map<std::string, float> face = nm.face;
+    if (posture.gazeMm) addLidFollow(out.gaze.eyePitchDeg + nm.headNodRad / kDeg, morphTargets_, face);
+    if (!face.empty()) pose.morphByName = mapFaceWeights(face, morphTargets_);
     return pose;
 }
 

@@ -32,6 +32,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,48 @@ float faceAvatarForward(render::Scene& scene, const BoneMapping& mapping = {});
 render::Scene loadSignerAvatar(const std::filesystem::path& file, const BoneMapping& mapping = {},
                                const std::string& flag = "--avatar");
 
+// The non-manual channels of one instant (issue 23; names and units of the seam,
+// stimuli/story/timeline.hpp). Zero everywhere is the neutral face and body.
+struct NonManualPosture {
+    // Face: ARKit-52 blendshape name -> weight 0..1. Shown on the avatar's own shapes of that
+    // name, else through the VRM expression map (signer/avatar_face.hpp); ignored otherwise.
+    std::map<std::string, float> face;
+    // Head (radians; jut mm): composed after the gaze's head turn, in the head's own frame.
+    float headNodRad = 0.0f;    // + chin down
+    float headShakeRad = 0.0f;  // + toward the signer's left
+    float headTiltRad = 0.0f;   // + toward the signer's left shoulder
+    float headJutMm = 0.0f;     // + forward (the neck leans, the head stays level)
+    // Torso (radians; shift mm): the spine and chest turn, and everything they carry — arms,
+    // hands, neck and head — with them: the signing space is the chest's (role shift).
+    float torsoLeanRad = 0.0f;   // + forward
+    float torsoTurnRad = 0.0f;   // + toward the signer's left
+    float torsoShiftMm = 0.0f;   // + toward the signer's left (the chest, by a sideways bend)
+    // Shoulders 0..1 (1 = kShoulderRaiseMaxDeg of the shoulder bone); the hands stay on target.
+    float shoulderRaiseLeft = 0.0f, shoulderRaiseRight = 0.0f;
+    bool neutral() const;
+};
+// Sets the seam's channel `channel` ("browInnerUp", "head.nod", "torso.turn",
+// "shoulders.raise", "shoulder.raiseLeft", ...) to `value` in the seam's units; a face
+// weight is clamped to [0, 1]. Returns false for a "head."/"torso."/"shoulder" name it does
+// not know (a face name is taken as given: a channel an avatar lacks is ignored when posing).
+bool setNonManualChannel(NonManualPosture& posture, const std::string& channel, double value);
+
+// The rotations the non-manuals give (body frame), empty when they are zero
+// (signer_pose_nonmanual.cpp).
+glm::quat headNonManualRotation(const NonManualPosture& nonManual);
+float jutLeanRad(float jutMm, float neckLengthMm);
+std::optional<glm::quat> shoulderRaiseRotation(hand::Side side, const NonManualPosture& nonManual);
+std::optional<glm::quat> torsoRotation(const NonManualPosture& nonManual, float torsoLengthMm);
+
+// The upper lids follow the eyes' vertical turn: down by as much as the eyes look down
+// (adding to eyeBlinkLeft/Right), up a little as they look up (eyeWideLeft/Right), on an
+// avatar with those ARKit shapes. `eyeUpDeg`: the eyes' pitch in the head, + up.
+void addLidFollow(float eyeUpDeg, const std::set<std::string>& targets, std::map<std::string, float>& face);
+
+// [D] A shrug's elevation of the shoulder girdle at full weight: ~12° of the clavicle, about
+// 30 mm at the shoulder joint (within the ~30–40° of clavicular elevation a shrug can reach).
+inline constexpr float kShoulderRaiseMaxDeg = 12.0f;
+
 struct SignerPosture {
     hand::HandControls rightHand, leftHand;
     // Body frame. Absent: the hand rests in front of the waist (restingTarget()).
@@ -96,6 +139,7 @@ struct SignerPosture {
     // kElbowHintWindowDeg of it, so the elbow moves smoothly between keys however the cost's
     // basins shift. Absent: the solver's rule of the target alone.
     std::optional<glm::vec3> rightElbowHint, leftElbowHint;
+    NonManualPosture nonManual;  // face, head, torso and shoulders
 };
 
 // [D] How far from a posture's elbow hint the arm solver may swing the elbow.
@@ -156,6 +200,12 @@ private:
     hand::GazeModel gaze_;
     glm::vec3 bodyOriginM_{0.0f};            // chest, world metres
     float handScale_ = 1.0f;
+    std::set<std::string> morphTargets_;     // every morph target name of the avatar
+    std::array<std::optional<glm::vec3>, 2> shoulderBoneMm_;  // right, left shoulder bones, body frame
+    float neckLengthMm_ = 90.0f;             // neck bone to head bone
+    float torsoLengthMm_ = 300.0f;           // spine bone to the shoulder joints' midpoint
+    // The arm model with the shoulder joint where the raised shoulder bone carries it.
+    hand::ArmModel raisedArm(hand::Side side, const NonManualPosture& nonManual) const;
 };
 
 }  // namespace signstim::signer

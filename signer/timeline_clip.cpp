@@ -92,6 +92,17 @@ glm::vec3 gazePointForReferent(const glm::dvec3& p) {
     return bodyFromSigningSpace(glm::vec3(point));
 }
 
+NonManualPosture nonManualAt(const stimuli::Timeline& timeline, double seconds) {
+    NonManualPosture posture;
+    for (const stimuli::NonManualTrack& track : timeline.nonManuals) {
+        const double value = stimuli::sampleNonManual(track, seconds);
+        // A face channel at 0 is left out, so a neutral instant poses exactly as without tracks.
+        if (value == 0.0) continue;
+        setNonManualChannel(posture, track.channel, value);
+    }
+    return posture;
+}
+
 glm::vec3 gazePointForViewer() { return glm::vec3(0.0f, static_cast<float>(kEyeHeightMm), 2000.0f); }
 
 glm::vec3 gazePoint(const stimuli::GazeKey& key) {
@@ -313,6 +324,7 @@ SignerPosture TimelineClip::straightPostureAt(double seconds) const {
             posture.leftElbowHint = elbow;
         }
     }
+    posture.nonManual = nonManualAt(timeline_, seconds);
     const stimuli::GazeSample gaze = stimuli::sampleGaze(timeline_.gaze, seconds);
     if (gaze.from) {
         const glm::vec3 a = gazePoint(*gaze.from), b = gazePoint(*gaze.to);

@@ -1,6 +1,7 @@
 #pragma once
 // A story timeline (stimuli/story/timeline.hpp) as a clip of the signer: each frame samples the
-// timeline's hands and gaze and resolves them on the rig — a resting hand goes to the rig's
+// timeline's hands, gaze and non-manual channels (face, head, torso, shoulders: nonManualAt)
+// and resolves them on the rig — a resting hand goes to the rig's
 // resting place, relaxed; a keyed hand to its wrist target and handshape; gaze toward the
 // viewer or a referent.
 //
@@ -79,6 +80,11 @@ inline constexpr double kRoutingFramesPerSecond = 30.0;
 // Sparks 1997; Goossens & Van Opstal 1997). [D] Planned at 250°/s, so the yaw-pitch turn
 // stays under 300°/s.
 inline constexpr double kHeadPeakDegPerSecond = 250.0;
+
+// The timeline's non-manual channels at `seconds` (stimuli::sampleNonManual of each track;
+// unknown head/torso/shoulder names are ignored, as a body that cannot show them would). A pure
+// function of the timeline and t: the same at any frame rate.
+NonManualPosture nonManualAt(const stimuli::Timeline& timeline, double seconds);
 
 // Where the eyes go for a referent at a signing-space point: toward it horizontally, a little
 // below eye level (a signer glances at the locus, not down at the chest), body frame.

@@ -66,7 +66,7 @@ TEST(Avatar, SkeletonHasEveryVrmBoneInTheHumanoidHierarchy) {
     EXPECT_EQ(parentName("leftIndexDistal"), "leftIndexIntermediate");
     EXPECT_EQ(parentName("rightThumbMetacarpal"), "rightHand");
     ASSERT_EQ(s.skins.size(), 1u);
-    EXPECT_EQ(s.materials.size(), 7u);  // skin, top, eye white, iris, hair, lips, nail
+    EXPECT_EQ(s.materials.size(), 9u);  // skin, top, eye white, iris, hair, lips, nail, pupil, mouth
     // The posing code accepts it as it is.
     EXPECT_NO_THROW(signer::SignerRig rig(s));
 }
