@@ -46,6 +46,9 @@ packages=(
   # for the PNG's resolution chunk (analysis/figure_png.hpp).
   libfreetype-dev libfontconfig-dev fonts-dejavu-core zlib1g-dev
   ffmpeg
+  # xmllint: the ELAN-file test (tests/stimuli/elan_export_test.cpp) has a real XML parser check
+  # that each .eaf is well formed (ELAN's EAFv3.0.xsd is in no Debian or npm package).
+  libxml2-utils
   # OpenImageIO's CMake package (libopenimageio-dev) names its command-line tools as imported
   # targets and refuses to configure when /usr/bin/iconvert & co. are missing; they live in
   # openimageio-tools, which --no-install-recommends leaves out.
