@@ -121,4 +121,27 @@ TEST(StudyAnnotationsCli, OutputsSwitchThemOff) {
     EXPECT_EQ(manifest["study"]["stories"][0]["clips"][0]["regions"], "");
 }
 
+TEST(StudyAnnotationsCli, StoryWritesRegionsAndElanFileBesideItsMp4) {
+    const fs::path dir = signstim::test::freshDir(SIGNSTIM_BINARY_DIR, "study_annotations_cli_test", "story", false);
+    const std::string story = shellQuote(kScenes + "/stories/examples/the-question.json");
+    const auto r = runSignstim("story " + story + " --version vector --size 96x72 --fps 5 --msaa 1 --quiet --annotations --out " +
+                               shellQuote((dir / "q.mp4").string()) + " --scenes " + shellQuote(kScenes));
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::uint64_t frames = std::stoull(r.output.substr(r.output.find("(vector), ") + 10));
+    std::stringstream csv(readFile(dir / "q.regions.csv"));
+    std::string line;
+    std::uint64_t rows = 0;
+    std::getline(csv, line);
+    while (std::getline(csv, line)) ++rows;
+    EXPECT_EQ(rows, frames * 4) << r.output;
+    const std::string eaf = readFile(dir / "q.eaf");
+    EXPECT_NE(eaf.find("RELATIVE_MEDIA_URL=\"q.mp4\""), std::string::npos);
+    EXPECT_NE(eaf.find("(vector)</ANNOTATION_VALUE>"), std::string::npos);
+    // A still has no frames to annotate: refused as a flag's mistake.
+    EXPECT_EQ(runSignstim("story " + story + " --version vector --annotations --out " + shellQuote((dir / "q.png").string()) +
+                          " --scenes " + shellQuote(kScenes))
+                  .status,
+              1);
+}
+
 }  // namespace
