@@ -167,7 +167,7 @@ void renderStory(const StoryOptions& o, const StoryWorld& world, const Story& st
                         signer::screenRegionsCsv(signer.avatar(), signer.rig(), model, {&clip}, {}, output.frameRate.value(),
                                                  output.size.width, output.size.height, 1, 1));
         ElanDocumentOptions elan;
-        elan.mediaUrl = output.out.filename().string();
+        elan.mediaUrl = "./" + output.out.filename().string();  // ELAN resolves "./" and "../" against the .eaf's folder
         elan.framesPerSecond = output.frameRate.value();
         for (const StorySentence& sentence : story.sentences) elan.sentenceGlosses.push_back(sentence.gloss);
         writeFileAtomic(base.string() + ".eaf", elanDocument({{"", &clip.timeline()}}, elan));

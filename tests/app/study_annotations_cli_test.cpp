@@ -135,7 +135,7 @@ TEST(StudyAnnotationsCli, StoryWritesRegionsAndElanFileBesideItsMp4) {
     while (std::getline(csv, line)) ++rows;
     EXPECT_EQ(rows, frames * 4) << r.output;
     const std::string eaf = readFile(dir / "q.eaf");
-    EXPECT_NE(eaf.find("RELATIVE_MEDIA_URL=\"q.mp4\""), std::string::npos);
+    EXPECT_NE(eaf.find("RELATIVE_MEDIA_URL=\"./q.mp4\""), std::string::npos);
     EXPECT_NE(eaf.find("(vector)</ANNOTATION_VALUE>"), std::string::npos);
     // A still has no frames to annotate: refused as a flag's mistake.
     EXPECT_EQ(runSignstim("story " + story + " --version vector --annotations --out " + shellQuote((dir / "q.png").string()) +
