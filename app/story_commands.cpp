@@ -5,9 +5,11 @@
 #include "app/commands.hpp"
 #include "app/story_timing.hpp"
 #include "stimuli/story/story_world.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/standard_output.hpp"
 #include "signer/clearance.hpp"
+#include "signer/screen_regions.hpp"
 #include "signer/signer.hpp"
 #include "signer/timeline_clip.hpp"
 #include "stimuli/story/lexicon.hpp"
@@ -15,9 +17,11 @@
 #include "stimuli/scenes_path.hpp"
 #include "stimuli/story/story.hpp"
 #include "stimuli/story/timeline_builder.hpp"
+#include "stimuli/study/elan_export.hpp"
 #include "stimuli/verbs/verb_models.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -25,6 +29,7 @@
 namespace signstim::app {
 
 using namespace signstim::signer;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -47,6 +52,7 @@ struct StoryOptions {
     std::string scenesDir;
     std::string lexiconFile;
     bool quiet = false;
+    bool annotations = false;  // --annotations: FILE.regions.csv and FILE.eaf beside FILE.mp4
 };
 
 VerbVersion requireVersion(const StoryOptions& o) {
@@ -156,6 +162,19 @@ void renderStory(const StoryOptions& o, const StoryWorld& world, const Story& st
             break;
         }
     const std::uint64_t frames = renderClipToOutput(output, signer, clip, stillSeconds);
+    if (o.annotations) {
+        // Beside the clip, as a study writes them (docs/study.md, "Eye-tracking regions", "ELAN files").
+        const fs::path base = fs::path(output.out).replace_extension();
+        const signer::ScreenRegionModel model(signer.avatar(), signer.rig());
+        writeFileAtomic(base.string() + ".regions.csv",
+                        signer::screenRegionsCsv(signer.avatar(), signer.rig(), model, {&clip}, {}, output.frameRate.value(),
+                                                 output.size.width, output.size.height, 1, 1));
+        ElanDocumentOptions elan;
+        elan.mediaUrl = "./" + output.out.filename().string();  // ELAN resolves "./" and "../" against the .eaf's folder
+        elan.framesPerSecond = output.frameRate.value();
+        for (const StorySentence& sentence : story.sentences) elan.sentenceGlosses.push_back(sentence.gloss);
+        writeFileAtomic(base.string() + ".eaf", elanDocument({{"", &clip.timeline()}}, elan));
+    }
     std::printf("%s: \"%s\" (%s), %llu frame%s, %.1f s\n", output.out.string().c_str(), story.title.c_str(),
                 toString(version).c_str(), static_cast<unsigned long long>(frames), frames == 1 ? "" : "s",
                 clip.durationSeconds());
@@ -212,10 +231,15 @@ void registerStoryCommands(Commands& commands) {
                       "A lab's own lexicon (a file or a folder of .json files) on top of SCENES/lexicon/: its signs are "
                       "added, and replace default signs of the same gloss (--check lists them)");
     story->add_flag("--quiet", o->quiet, "No progress on stderr");
+    story->add_flag("--annotations", o->annotations,
+                    "With --out FILE.mp4: also write FILE.regions.csv (eye-tracking regions of every frame) and "
+                    "FILE.eaf (ELAN annotations), as a study writes them (docs/study.md)");
     story->callback([o] {
         requireInRange(o->rate, 0.1, 4.0, "--rate");
         if (!o->check && !o->json && o->outPath.empty())
             throw commandLineError("--out", "say what to do: --check, --json or --out FILE");
+        if (o->annotations && fs::path(o->outPath).extension() != ".mp4")
+            throw commandLineError("--annotations", "goes with --out FILE.mp4 (the regions and ELAN file sit beside the clip)");
         std::optional<VerbVersion> version;
         if (!o->check) version = requireVersion(*o);
         const StoryWorld world(o->scenesDir, o->lexiconFile);

@@ -250,6 +250,8 @@ void registerStudyCommands(Commands& commands) {
                         static_cast<unsigned long long>(r.renderedImages), static_cast<unsigned long long>(r.clipFrames),
                         100.0 * reused, row.ownCpu, row.encoderCpu);
         }
+        std::printf("eye-tracking regions and ELAN files (docs/study.md): %.2f s of signstim's time in the study run\n",
+                    rows.front().report.annotationSeconds);
         std::printf("speed-up over naive: %.2fx wall (target >= 2x on 2 cores), %.2fx CPU (signstim + encoders)\n",
                     rows[1].report.totalSeconds / rows[0].report.totalSeconds,
                     (rows[1].ownCpu + rows[1].encoderCpu) / (rows[0].ownCpu + rows[0].encoderCpu));

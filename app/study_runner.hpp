@@ -38,6 +38,7 @@ struct StudyRunReport {
     std::uint64_t sharedFrames = 0;    // story frames drawn once for all versions
     double timelineSeconds = 0.0, renderSeconds = 0.0, encodeWaitSeconds = 0.0, writeSeconds = 0.0;
     double totalSeconds = 0.0;
+    double annotationSeconds = 0.0;    // eye-tracking regions and ELAN files (app/study_annotations.hpp)
     bool complete = false;             // every unit of the study is there (exports and manifest written)
     bool experiment = false;           // experiment/ was written with them
     std::string firstParticipant;      // "P01", for the message that says how to open it

@@ -1,6 +1,7 @@
 #include "app/study_units.hpp"
 
 #include "app/clip_output.hpp"
+#include "app/study_annotations.hpp"
 #include "common/atomic_file.hpp"
 #include "common/file_manifest.hpp"
 #include "renderer/frame_sink.hpp"
@@ -83,7 +84,8 @@ struct UnitRenderer::State {
     State(const LoadedStudy& s, const StudyRunOptions& options, const fs::path& dir)
         : s_(s), options_(options), dir_(dir),
           signer_(s.world->scenes),
-          renderer_(signer::signerRendererOptions(s.settings.width, s.settings.height, s.settings.msaa, options.device)) {
+          renderer_(signer::signerRendererOptions(s.settings.width, s.settings.height, s.settings.msaa, options.device)),
+          regionModel_(signer_.avatar(), signer_.rig()) {
         handle_ = renderer_.addScene(signer_.avatar());
         const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
         // A story's versions are encoded together (its shared frames go to all of them at
@@ -188,6 +190,10 @@ struct UnitRenderer::State {
         }
         report.renderSeconds += secondsSince(start);
         failOnValidationMessages(renderer_);
+        // Eye-tracking regions and ELAN files beside the clips (app/study_annotations.hpp).
+        const auto annotating = Clock::now();
+        job->annotations = makeUnitAnnotations(s_, signer_, regionModel_, unit, timelines, clipPointers);
+        report.annotationSeconds += secondsSince(annotating);
 
         // Finish on a worker: encoders drain while the next unit renders.
         const fs::path dir = dir_;
@@ -215,6 +221,7 @@ struct UnitRenderer::State {
         std::vector<json> shows;  // what each clip shows, for the manifest
         std::vector<std::unique_ptr<ClipSinks>> sinks;
         std::uint64_t frames = 0;
+        UnitAnnotations annotations;
     };
     struct Pending {
         std::size_t encoders = 0;
@@ -260,6 +267,7 @@ struct UnitRenderer::State {
                 frames["shows"] = job.shows[i];
                 files.push_back(frames);
             }
+            writeUnitAnnotations(dir, clip, job.annotations, i, job.shows[i], files);
         }
         writeUnitRecord(dir, job.unit.id, job.inputHash, job.frames, files);
     }
@@ -269,6 +277,7 @@ struct UnitRenderer::State {
     fs::path dir_;
     signer::Signer signer_;
     render::Renderer renderer_;
+    signer::ScreenRegionModel regionModel_;
     int handle_ = 0;
     std::size_t limit_ = 4;
     std::deque<Pending> pending_;

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,19 @@ Camera frameBounds(const Bounds& bounds, float aspect, float verticalFovDegrees 
 // must differ", ...). The renderer refuses such a view; callers whose camera comes from the
 // user check first, so that the message names the flag or file it came from.
 std::string cameraProblem(const Camera& camera);
+
+// The pixels of view `index` in a width × height image whose views fill a columns × rows grid
+// row by row: the renderer's viewport and scissor for that view (the boundaries at
+// column·width/columns, integer division).
+struct ViewCell {
+    std::uint32_t x = 0, y = 0, width = 0, height = 0;
+};
+ViewCell viewCell(std::uint32_t width, std::uint32_t height, std::uint32_t columns, std::uint32_t rows,
+                  std::size_t index);
+// The renderer's projection · view matrix of `camera` for a cell of aspect width/height (clip
+// space +Y up, depth 0..1 with GLM_FORCE_DEPTH_ZERO_TO_ONE). Whoever must know where something
+// lands in a rendered image (signer/screen_regions.hpp) projects with this.
+glm::mat4 viewProjection(const Camera& camera, float aspect);
 
 struct View {
     int scene = 0;         // handle returned by Renderer::addScene

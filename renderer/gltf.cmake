@@ -1,6 +1,7 @@
 # glTF/output half of signstim_renderer (owned by the glTF side).
 target_sources(signstim_renderer PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/scene.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/view_geometry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_validate.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_accessors.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gltf_files.cpp

@@ -54,14 +54,8 @@ std::string joinCounts(const std::vector<std::uint32_t>& counts) {
 
 LabelRect cellOf(std::uint32_t width, std::uint32_t height, std::uint32_t columns,
                  std::uint32_t rows, std::size_t index) {
-    const auto column = static_cast<std::uint32_t>(index % columns);
-    const auto row = static_cast<std::uint32_t>(index / columns);
-    LabelRect cell;
-    cell.x = column * width / columns;
-    cell.y = row * height / rows;
-    cell.width = (column + 1) * width / columns - cell.x;
-    cell.height = (row + 1) * height / rows - cell.y;
-    return cell;
+    const ViewCell c = viewCell(width, height, columns, rows, index);  // renderer/view_geometry.cpp
+    return LabelRect{c.x, c.y, c.width, c.height};
 }
 
 struct Draw {
@@ -286,15 +280,7 @@ void Renderer::Impl::recordFrame(Slot& slot, const Frame& frame) {
 
         const Camera& camera = view.camera;
         const float aspect = float(draws.cell.width) / float(draws.cell.height);
-        glm::mat4 projection =
-            camera.orthographic
-                ? glm::ortho(-0.5f * camera.orthographicHeight * aspect,
-                             0.5f * camera.orthographicHeight * aspect,
-                             -0.5f * camera.orthographicHeight, 0.5f * camera.orthographicHeight,
-                             camera.nearPlane, camera.farPlane)
-                : glm::perspective(glm::radians(camera.verticalFovDegrees), aspect,
-                                   camera.nearPlane, camera.farPlane);
-        draws.push.viewProjection = projection * glm::lookAt(camera.eye, camera.target, camera.up);
+        draws.push.viewProjection = viewProjection(camera, aspect);  // renderer/view_geometry.cpp
         draws.push.cameraPosition = glm::vec4(camera.eye, 1.0f);
 
         if (view.pose.local.empty())

@@ -50,6 +50,9 @@ packages=(
   # word and when each is said, from espeak-ng, a maintained synthesizer, instead of a hand-made
   # letter table; espeak-ng-data holds its dictionaries and voices, read at run time.
   libespeak-ng-dev espeak-ng-data
+  # xmllint: the ELAN-file test (tests/stimuli/elan_export_test.cpp) has a real XML parser check
+  # that each .eaf is well formed (ELAN's EAFv3.0.xsd is in no Debian or npm package).
+  libxml2-utils
   # OpenImageIO's CMake package (libopenimageio-dev) names its command-line tools as imported
   # targets and refuses to configure when /usr/bin/iconvert & co. are missing; they live in
   # openimageio-tools, which --no-install-recommends leaves out.

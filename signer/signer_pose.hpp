@@ -168,6 +168,9 @@ public:
     // to the middle knuckle over the model's (1 for the default signer).
     float handScale() const { return handScale_; }
 
+    // The avatar node of a VRM humanoid bone ("head", "rightHand"), -1 when the avatar has none
+    // (screen regions, signer/screen_regions.hpp, find the parts of the mesh by it).
+    int boneNode(const std::string& vrmName) const { return node(vrmName); }
     // Where an unused hand rests: in front of the waist, palm in.
     hand::ArmTarget restingTarget(hand::Side side) const;
     // A comfortable default for a hand being shown: beside the shoulder, palm toward the

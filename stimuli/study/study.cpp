@@ -44,7 +44,12 @@ public:
             const json& outputs = root["outputs"];
             if (!outputs.is_object())
                 source_.failAt("/outputs", "expected {\"pngFrames\": false, \"experiment\": \"jspsych\"}");
-            knownKeys(outputs, "/outputs", {"pngFrames", "experiment"});
+            knownKeys(outputs, "/outputs", {"pngFrames", "experiment", "regions", "elan"});
+            for (const char* key : {"regions", "elan"}) {
+                if (!outputs.contains(key)) continue;
+                if (!outputs[key].is_boolean()) source_.failAt(std::string("/outputs/") + key, "expected true or false");
+                (std::string(key) == "regions" ? study_.regions : study_.elan) = outputs[key].get<bool>();
+            }
             if (outputs.contains("pngFrames")) {
                 if (!outputs["pngFrames"].is_boolean()) source_.failAt("/outputs/pngFrames", "expected true or false");
                 study_.pngFrames = outputs["pngFrames"].get<bool>();
@@ -346,6 +351,8 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
         c.video = "clips/" + name + ".mp4";
         c.poster = "posters/" + name + ".png";
         if (pngFrames) c.frames = "frames/" + name;
+        if (study.regions) c.regions = "regions/" + name + ".csv";
+        if (study.elan) c.annotation = "elan/" + name + ".eaf";
         return c;
     };
     for (std::size_t s = 0; s < stories.size(); ++s) {

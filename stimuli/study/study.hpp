@@ -70,6 +70,10 @@ struct StudyFile {
     StudyRenderSettings render;                 // full quality
     StudyRenderSettings quick{320, 240, "15", 0, 1, 1.0, {}};  // timing: the render's unless given
     bool pngFrames = false;                     // also write each clip's PNG frames
+    // "outputs": {"regions", "elan"}: each clip's eye-tracking regions (CSV) and ELAN annotation
+    // file (.eaf) beside it (docs/study.md); on unless switched off.
+    bool regions = true;
+    bool elan = true;
     StoryOrder order = StoryOrder::Random;      // "order": phase 1's story order (study_design.hpp)
     // "session": what the jsPsych experiment asks (docs/experiment.md). ratingPrompt: the
     // phase-2 question ({verb}, {minimum}, {maximum} filled in); background: the background

@@ -76,12 +76,13 @@ std::string unitInputHash(const std::string& dataHash, const StudyUnit& unit, co
     hash.update(dataHash + "\n" + unit.id + "\n");
     if (unit.story) {
         hash.update(readTextFile(study.stories[unit.index].path));
-        for (const ListedClip& c : listing.stories[unit.index].clips) hash.update(c.video + "\n");
+        for (const ListedClip& c : listing.stories[unit.index].clips)
+            hash.update(c.video + "\n" + c.regions + "\n" + c.annotation + "\n");
     } else {
         hash.update(readTextFile(study.phase2Story.path));
         const ListedSentence& sentence = listing.sentences[unit.index];
         hash.update(std::to_string(study.phase2Sentences[unit.index]) + " " + sentence.panelCode + " " + sentence.clip.video +
-                    "\n");
+                    "\n" + sentence.clip.regions + "\n" + sentence.clip.annotation + "\n");
     }
     return hash.hexDigest();
 }

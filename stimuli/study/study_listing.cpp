@@ -11,7 +11,8 @@ using nlohmann::json;
 namespace {
 
 json clipToJson(const ListedClip& c) {
-    return {{"video", c.video}, {"poster", c.poster}, {"frames", c.frames}, {"durationSeconds", c.durationSeconds},
+    return {{"video", c.video},     {"poster", c.poster},         {"frames", c.frames},
+            {"regions", c.regions}, {"annotation", c.annotation}, {"durationSeconds", c.durationSeconds},
             {"frameCount", c.frameCount}};
 }
 
@@ -73,6 +74,9 @@ public:
         c.video = text(object, "video", where);
         c.poster = text(object, "poster", where);
         c.frames = text(object, "frames", where);
+        // Absent from folders written before issue 24: none written.
+        if (object.contains("regions")) c.regions = text(object, "regions", where);
+        if (object.contains("annotation")) c.annotation = text(object, "annotation", where);
         c.durationSeconds = number(object, "durationSeconds", where);
         c.frameCount = count(object, "frameCount", where);
         return c;

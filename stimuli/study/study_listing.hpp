@@ -21,6 +21,10 @@ struct ListedClip {
     std::string video;         // "clips/story-03_version-point.mp4"
     std::string poster;        // "posters/story-03_version-point.png"
     std::string frames;        // "frames/story-03_version-point" or empty when not written
+    // Eye-tracking regions and ELAN annotations (docs/study.md): "regions/story-03_version-point.csv",
+    // "elan/story-03_version-point.eaf", or empty when the study does not write them.
+    std::string regions;
+    std::string annotation;
     double durationSeconds = 0.0;  // frames / fps
     std::uint64_t frameCount = 0;
 };

@@ -24,3 +24,9 @@ signstim_add_test(signstim_app_analysis_tests
   SOURCES analysis_cli_test.cpp
   LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
 add_dependencies(signstim_app_analysis_tests signstim)
+
+# Eye-tracking regions and ELAN files beside a study's clips (issue 24 §3-4), end to end.
+signstim_add_test(signstim_app_study_annotations_tests
+  SOURCES study_annotations_cli_test.cpp
+  LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
+add_dependencies(signstim_app_study_annotations_tests signstim)
