@@ -123,6 +123,7 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
                                studyInputs(data, s.world->lexiconPath, s.world->labLexiconPath,
                                            signer::defaultAvatarPath(data)));
     s.units = studyUnits(s.listing);
+    s.humanClips = loadHumanClips(s.study, s.listing);  // probed now: a bad recording fails before any frame
     return s;
 }
 
@@ -174,7 +175,11 @@ std::uint64_t frameCount(double durationSeconds, double fps) {
 
 json makePlan(const LoadedStudy& s) {
     std::vector<std::string> hashes;
-    for (const StudyUnit& u : s.units) hashes.push_back(unitInputHash(s.dataHash, u, s.study, s.listing));
+    for (const StudyUnit& u : s.units) {
+        const auto human = s.humanClips.find(u.id);
+        const std::string hash = unitInputHash(s.dataHash, u, s.study, s.listing);
+        hashes.push_back(human == s.humanClips.end() ? hash : withHumanClips(hash, human->second));
+    }
     return studyPlan(s.listing, s.settings, s.pngFrames, s.units, hashes, s.experiment);
 }
 
