@@ -230,6 +230,13 @@ void checkStudy(const StudyRunOptions& options) {
                 s.study.file.c_str(), s.study.title.c_str(), spec.stories, spec.versions, spec.participants, spec.versions,
                 spec.stories / spec.versions, spec.stories / spec.versions == 1 ? "" : "s", spec.likertTrials, storySeconds, likertSeconds,
                 s.listing.designHash.substr(0, 12).c_str());
+    for (const HumanVersion& h : s.study.humanVersions) {
+        std::size_t recordings = 0;
+        for (const auto& unit : s.humanClips)
+            for (const HumanClip& clip : unit.second) recordings += clip.name == h.name ? 1 : 0;
+        std::printf("  human version \"%s\" (%s): %zu recording%s probed\n", h.name.c_str(),
+                    h.phase2Clips.empty() ? "phase 1" : "phases 1 and 2", recordings, recordings == 1 ? "" : "s");
+    }
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
 }
 
