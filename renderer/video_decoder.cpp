@@ -270,14 +270,20 @@ VideoCellSink::VideoCellSink(FrameSink& next, std::unique_ptr<VideoFrameReader> 
         throw std::invalid_argument("VideoCellSink: the video's frames must be the cell's size");
 }
 
-void VideoCellSink::paint(Image& frame) {
+bool VideoCellSink::advance() {
+    if (videoEnded_) return false;
+    Image next;
+    if (reader_->next(next)) {
+        video_ = std::move(next);
+        return true;
+    }
+    videoEnded_ = true;
+    return false;
+}
+
+void VideoCellSink::paint(Image& frame) const {
     if (frame.format != PixelFormat::Rgba8 || cell_.x + cell_.width > frame.width || cell_.y + cell_.height > frame.height)
         throw std::invalid_argument("VideoCellSink: an RGBA8 frame holding the cell is needed");
-    if (!videoEnded_) {
-        Image next;
-        if (reader_->next(next)) video_ = std::move(next);
-        else videoEnded_ = true;
-    }
     if (video_.bytes.empty()) return;
     const std::size_t row = static_cast<std::size_t>(cell_.width) * 4;
     for (std::uint32_t y = 0; y < cell_.height; ++y)
@@ -287,6 +293,7 @@ void VideoCellSink::paint(Image& frame) {
 }
 
 void VideoCellSink::push(Image&& frame) {
+    advance();  // after the video's last frame the cell holds it
     paint(frame);
     last_ = frame;
     ++count_;
@@ -297,18 +304,9 @@ void VideoCellSink::finish() {
     if (finished_) return;
     finished_ = true;
     // The video outlasts the other panels: they hold their last frame while it plays on.
-    while (!videoEnded_ && !last_.bytes.empty()) {
+    while (!last_.bytes.empty() && advance()) {
         Image frame = last_;
-        Image next;
-        if (!reader_->next(next)) {
-            videoEnded_ = true;
-            break;
-        }
-        video_ = std::move(next);
-        const bool ended = videoEnded_;
-        videoEnded_ = true;  // paint() must not read another frame: this one is already in video_
         paint(frame);
-        videoEnded_ = ended;
         ++count_;
         next_.push(std::move(frame));
     }

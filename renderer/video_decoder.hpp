@@ -85,7 +85,8 @@ public:
     std::uint64_t framesPushed() const override { return count_; }
 
 private:
-    void paint(Image& frame);
+    bool advance();                    // the video's next frame into video_; false at its end
+    void paint(Image& frame) const;    // video_ into the cell, with the label
 
     FrameSink& next_;
     std::unique_ptr<VideoFrameReader> reader_;
