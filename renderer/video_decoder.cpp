@@ -178,7 +178,7 @@ VideoFrameReader::VideoFrameReader(const fs::path& file, std::uint32_t width, st
     const std::string w = std::to_string(width), h = std::to_string(height);
     const std::string flags = "bicubic+accurate_rnd+full_chroma_int+bitexact";
     // See the header: resample by timestamps, fit inside keeping the aspect, centre on black.
-    const std::string filters = "fps=fps=" + rate.text() + ",scale=w=" + w + ":h=" + h +
+    const std::string filters = "fps=fps=" + rate.text() + ":round=up,scale=w=" + w + ":h=" + h +
                                 ":force_original_aspect_ratio=decrease:flags=" + flags + ",pad=" + w + ":" + h +
                                 ":(ow-iw)/2:(oh-ih)/2:color=black,setsar=1,format=rgba";
     const Child child = spawn({ffmpeg, "-hide_banner", "-nostdin", "-loglevel", "error", "-i", file.string(), "-map", "0:v:0",

@@ -4,8 +4,9 @@
 // runs the ffmpeg tools as child processes (posix_spawn, no shell, ended on a signal): ffprobe
 // to probe, ffmpeg to decode to raw RGBA on a pipe. Knows nothing of what the video shows.
 //
-// Normalised decoding [D]: ffmpeg's `fps` filter takes, for each output instant n/rate, the
-// input frame showing then (timestamps only: deterministic); `scale` fits the picture inside
+// Normalised decoding [D]: ffmpeg's `fps` filter with round=up gives output frame n the input
+// frame showing at n/rate (sample and hold, as the animations are sampled at n/rate), for
+// every n/rate before the recording's end (timestamps only: deterministic); `scale` fits the picture inside
 // the target keeping its display aspect, `pad` centres it on black (letterbox or pillarbox).
 // swscale runs with bitexact+accurate_rnd, so the same file and ffmpeg give the same pixels on
 // every machine (as x264 with a fixed thread count gives the same bytes, video_encoder.hpp).

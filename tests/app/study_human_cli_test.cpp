@@ -90,11 +90,12 @@ TEST(StudyHumanCli, RecordingsAreNormalisedHashedVerifiedAndAChangedOneRendersOn
     auto clips = videos(out);
     ASSERT_EQ(clips.size(), 12u);  // 3 stories x 3 versions, 3 side-by-side sentences
     const nlohmann::json& human = clips.at("clips/story-02_version-human.mp4");
-    // Normalised to the study's size and rate; 1.5 s at 2 fps.
+    // Normalised to the study's size and rate: 1.5 s (38 frames at 25 fps, to 1.52 s) at 2 fps shows
+    // the recording at 0, 0.5, 1 and 1.5 s.
     EXPECT_EQ(human["width"], 64);
     EXPECT_EQ(human["height"], 64);
     EXPECT_EQ(human["fps"], "2");
-    EXPECT_EQ(human["frames"], 3);
+    EXPECT_EQ(human["frames"], 4);
     EXPECT_EQ(human["shows"]["version"], "human");
     EXPECT_EQ(human["shows"]["source"]["sha256"], sha256Of(dir / "human" / "synthetic-story-02.mp4"));
     EXPECT_EQ(human["shows"]["source"]["width"], 96);
@@ -103,7 +104,7 @@ TEST(StudyHumanCli, RecordingsAreNormalisedHashedVerifiedAndAChangedOneRendersOn
                                 "stream=codec_name,width,height,pix_fmt,r_frame_rate,nb_read_frames -of csv=p=0 " +
                                     shellQuote((out / "clips/story-02_version-human.mp4").string()),
                                 Capture::StdoutOnly);
-    EXPECT_EQ(probe.output, "h264,64,64,yuv420p,2/1,3\n");
+    EXPECT_EQ(probe.output, "h264,64,64,yuv420p,2/1,4\n");
     // The side-by-side clip names its panels and the recording in the human one.
     bool composite = false;
     for (const auto& entry : clips) {
@@ -125,7 +126,7 @@ TEST(StudyHumanCli, RecordingsAreNormalisedHashedVerifiedAndAChangedOneRendersOn
                                      shellQuote(out.string()));
     EXPECT_NE(changed.output.find("1 of 6 units rendered, 5 already complete"), std::string::npos) << changed.output;
     const auto after = videos(out);
-    EXPECT_EQ(after.at("clips/story-02_version-human.mp4")["frames"], 5);  // 2.5 s at 2 fps
+    EXPECT_EQ(after.at("clips/story-02_version-human.mp4")["frames"], 6);  // 2.5 s at 2 fps: 0, 0.5, ... 2.5 s
     EXPECT_NE(after.at("clips/story-02_version-human.mp4")["sha256"], human["sha256"]);
     EXPECT_EQ(after.at("clips/story-01_version-human.mp4"), clips.at("clips/story-01_version-human.mp4"));
     EXPECT_EQ(runSignstim("study verify " + shellQuote(out.string())).status, 0);

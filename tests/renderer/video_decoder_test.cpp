@@ -132,8 +132,8 @@ TEST(VideoFrameReader, NormalisesSizeAndRateLetterboxed) {
     EXPECT_EQ(count, 20u);  // 2 s at 10 fps
 }
 
-// The output frame at time t shows the source frame showing at t: 5 fps counted frames read at
-// 10 fps repeat each, read at 2.5 fps keep every other one; the same pixels on a second read.
+// Output frame n shows the source frame showing at n/rate: 5 fps counted frames read at 10 fps
+// repeat each, read at 2.5 fps keep every other one; the same pixels on a second read.
 TEST(VideoFrameReader, ResamplesByTimestampsDeterministically) {
     const fs::path clip = countingClip("synthetic-counting.mp4", 32, 32, 6, FrameRate{5, 1});
     const auto reds = [&](const FrameRate& rate) {
@@ -145,6 +145,9 @@ TEST(VideoFrameReader, ResamplesByTimestampsDeterministically) {
     };
     EXPECT_EQ(reds(FrameRate{10, 1}), (std::vector<int>{1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6}));
     EXPECT_EQ(reds(FrameRate{5, 2}), (std::vector<int>{1, 3, 5}));
+    // At 4 fps the instants 0, 0.25, 0.5, 0.75, 1 s show source frames 1, 2, 3, 4, 6 (at 0, 0.2,
+    // 0.4, 0.6, 1.0 s): the frame showing at n/rate, not the one nearest the middle of the interval.
+    EXPECT_EQ(reds(FrameRate{4, 1}), (std::vector<int>{1, 2, 3, 4, 6}));
     const auto bytes = [&] {
         VideoFrameReader reader(clip, 20, 14, FrameRate{30000, 1001});
         std::string all;
