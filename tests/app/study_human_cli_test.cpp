@@ -116,6 +116,11 @@ TEST(StudyHumanCli, RecordingsAreNormalisedHashedVerifiedAndAChangedOneRendersOn
         EXPECT_TRUE(composite) << shows.dump();
     }
     EXPECT_EQ(runSignstim("study verify " + shellQuote(out.string())).status, 0);
+    // The exports and the review page carry the human version like any other.
+    EXPECT_NE(readFile(out / "overview.csv").find("story-01,The copied homework,point,uninflected,human"), std::string::npos)
+        << readFile(out / "overview.csv");
+    EXPECT_NE(readFile(out / "participants" / "P01" / "P01_conditions.csv").find("_version-human.mp4"), std::string::npos);
+    EXPECT_NE(readFile(out / "index.html").find("story-02_version-human.mp4"), std::string::npos);
 
     // Nothing changed: nothing rendered. One recording replaced: its unit only.
     const auto again = runSignstim("study " + shellQuote(file.string()) + " --scenes " + shellQuote(kScenes) + " --out " +
