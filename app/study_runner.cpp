@@ -123,6 +123,7 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
                                studyInputs(data, s.world->lexiconPath, s.world->labLexiconPath,
                                            signer::defaultAvatarPath(data)));
     s.units = studyUnits(s.listing);
+    s.humanClips = loadHumanClips(s.study, s.listing);  // probed now: a bad recording fails before any frame
     return s;
 }
 
@@ -175,7 +176,11 @@ std::uint64_t frameCount(double durationSeconds, double fps) {
 
 json makePlan(const LoadedStudy& s) {
     std::vector<std::string> hashes;
-    for (const StudyUnit& u : s.units) hashes.push_back(unitInputHash(s.dataHash, u, s.study, s.listing));
+    for (const StudyUnit& u : s.units) {
+        const auto human = s.humanClips.find(u.id);
+        const std::string hash = unitInputHash(s.dataHash, u, s.study, s.listing);
+        hashes.push_back(human == s.humanClips.end() ? hash : withHumanClips(hash, human->second));
+    }
     return studyPlan(s.listing, s.settings, s.pngFrames, s.units, hashes, s.experiment);
 }
 
@@ -226,6 +231,13 @@ void checkStudy(const StudyRunOptions& options) {
                 s.study.file.c_str(), s.study.title.c_str(), spec.stories, spec.versions, spec.participants, spec.versions,
                 spec.stories / spec.versions, spec.stories / spec.versions == 1 ? "" : "s", spec.likertTrials, storySeconds, likertSeconds,
                 s.listing.designHash.substr(0, 12).c_str());
+    for (const HumanVersion& h : s.study.humanVersions) {
+        std::size_t recordings = 0;
+        for (const auto& unit : s.humanClips)
+            for (const HumanClip& clip : unit.second) recordings += clip.name == h.name ? 1 : 0;
+        std::printf("  human version \"%s\" (%s): %zu recording%s probed\n", h.name.c_str(),
+                    h.phase2Clips.empty() ? "phase 1" : "phases 1 and 2", recordings, recordings == 1 ? "" : "s");
+    }
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
 }
 

@@ -38,12 +38,14 @@ struct ClipSinks {
     std::unique_ptr<render::FrameSink> video, frames;
     std::unique_ptr<render::TeeSink> tee;  // the MP4 and, when asked, the PNG frames
     std::unique_ptr<render::StillCapturingSink> still;
+    // Human-video panels drawn over a side-by-side clip (app/study_human.hpp), each wrapping the last.
+    std::vector<std::unique_ptr<render::VideoCellSink>> cells;
     bool finished = false;
-    render::FrameSink* entry() { return still.get(); }
+    render::FrameSink* entry() { return cells.empty() ? static_cast<render::FrameSink*>(still.get()) : cells.back().get(); }
     void finish() {
         if (finished) return;
         finished = true;
-        still->finish();
+        entry()->finish();  // a video cell finishes the ones inside it, down to the still
     }
 };
 
@@ -90,7 +92,7 @@ struct UnitRenderer::State {
         const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
         // A story's versions are encoded together (its shared frames go to all of them at
         // once); the naive baseline finishes each clip before the next.
-        limit_ = options.shareFrames ? std::max<std::size_t>(options.jobs > 0 ? options.jobs : cores, s.study.versions.size())
+        limit_ = options.shareFrames ? std::max<std::size_t>(options.jobs > 0 ? options.jobs : cores, s.listing.versions.size())
                                      : 1;
     }
 
@@ -114,6 +116,10 @@ struct UnitRenderer::State {
         job->unit = unit;
         job->inputHash = inputHash;
         std::vector<render::FrameSink*> entries;
+        // The lab's recordings this unit shows (human-video versions), in version / panel order.
+        const auto humanEntry = s_.humanClips.find(unit.id);
+        const std::vector<HumanClip> noHuman;
+        const std::vector<HumanClip>& human = humanEntry == s_.humanClips.end() ? noHuman : humanEntry->second;
         if (unit.story) {
             const ListedStory& story = s_.listing.stories[unit.index];
             for (std::size_t v = 0; v < story.clips.size(); ++v) {
@@ -121,8 +127,14 @@ struct UnitRenderer::State {
                 job->clips.push_back(clip);
                 job->shows.push_back({{"phase", 1}, {"story", story.id}, {"title", story.title},
                                       {"version", s_.listing.versions[v]}});
-                job->sinks.push_back(makeClipSinks(dir_, clip, s_.frameRate, poster));
-                entries.push_back(job->sinks.back()->entry());
+                const bool animated = v < clips.size();  // the human versions come after the animated ones
+                const HumanClip* recording = nullptr;
+                for (const HumanClip& h : human)
+                    if (h.version == v) recording = &h;
+                if (recording) job->shows.back()["source"] = humanSource(*recording);
+                job->sinks.push_back(makeClipSinks(
+                    dir_, clip, s_.frameRate, animated || !recording ? poster : humanPosterFrame(*recording, s_.frameRate)));
+                if (animated) entries.push_back(job->sinks.back()->entry());
             }
         } else {
             const ListedSentence& sentence = s_.listing.sentences[unit.index];
@@ -132,6 +144,14 @@ struct UnitRenderer::State {
             job->clips.push_back(sentence.clip);
             job->shows.push_back({{"phase", 2}, {"sentence", sentence.id}, {"gloss", sentence.gloss}, {"verb", sentence.verb},
                                   {"panels", panels}});
+            if (!human.empty()) {
+                json sources = json::object();
+                std::size_t next = 0;
+                for (std::size_t k = 0; k < sentence.panelVersion.size(); ++k)
+                    if (sentence.panelVersion[k] >= clips.size() && next < human.size())
+                        sources[panelLabel(k)] = humanSource(human[next++]);
+                job->shows.back()["sources"] = sources;
+            }
             job->sinks.push_back(makeClipSinks(dir_, job->clips.back(), s_.frameRate, poster));
         }
         waitForEncoders(job->sinks.size(), report);
@@ -166,19 +186,40 @@ struct UnitRenderer::State {
                     job->frames = n;
                 }
             }
+            // The human versions: the lab's recordings, normalised to the study's size, rate and
+            // format, through the same sinks (MP4, poster, PNG frames) as the animated ones.
+            for (const HumanClip& h : human) {
+                const auto reader = humanFrames(h, s_.settings.width, s_.settings.height, s_.frameRate);
+                render::FrameSink& sink = *job->sinks.at(h.version)->entry();
+                render::Image frame;
+                while (reader->next(frame)) sink.push(std::move(frame));
+                report.clipFrames += reader->framesRead();
+            }
         } else {
             // Phase 2: the versions side by side, panel k showing panelVersion[k], labelled A, B, ...
             const ListedSentence& sentence = s_.listing.sentences[unit.index];
             std::vector<const signer::Clip*> panels;
             std::vector<std::string> labels;
             for (std::size_t k = 0; k < sentence.panelVersion.size(); ++k) {
-                panels.push_back(clipPointers[sentence.panelVersion[k]]);
+                // A human version's panel is drawn over (below); the signer drawn there first is never seen.
+                const std::size_t v = sentence.panelVersion[k];
+                panels.push_back(clipPointers[v < clipPointers.size() ? v : 0]);
                 labels.push_back(panelLabel(k));
             }
             signer::ClipRenderOptions ro;
             ro.framesPerSecond = fps;
             ro.columns = static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(panels.size()))));
             ro.rows = static_cast<std::uint32_t>((panels.size() + ro.columns - 1) / ro.columns);
+            // The lab's recordings into their panels, letterboxed to the panel's size, labelled like the others.
+            ClipSinks& sinks = *job->sinks.front();
+            std::size_t next = 0;
+            for (std::size_t k = 0; k < sentence.panelVersion.size(); ++k) {
+                if (sentence.panelVersion[k] < clipPointers.size() || next >= human.size()) continue;
+                const render::LabelRect cell = render::gridCell(s_.settings.width, s_.settings.height, ro.columns, ro.rows, k);
+                render::FrameSink& inner = *sinks.entry();
+                sinks.cells.push_back(std::make_unique<render::VideoCellSink>(
+                    inner, humanFrames(human[next++], cell.width, cell.height, s_.frameRate), cell, panelLabel(k)));
+            }
             const std::uint64_t n =
                 signer::renderClips(renderer_, handle_, signer_.avatar(), signer_.rig(), panels, labels, ro,
                                     *job->sinks.front()->entry(), [&](std::uint64_t done, std::uint64_t total) {
@@ -250,11 +291,13 @@ struct UnitRenderer::State {
             const ListedClip& clip = job.clips[i];
             render::writeImage(sinks.still->still(), dir / clip.poster);
             json video = describeFile(dir, clip.video, "video");
-            video["frames"] = job.frames;
+            // Each clip's own count: a human version's recording has its own length.
+            const std::uint64_t frames = sinks.still->framesPushed();
+            video["frames"] = frames;
             video["fps"] = rate.text();
             video["width"] = settings.width;
             video["height"] = settings.height;
-            video["durationSeconds"] = static_cast<double>(job.frames) / rate.value();
+            video["durationSeconds"] = static_cast<double>(frames) / rate.value();
             video["shows"] = job.shows[i];
             files.push_back(video);
             json poster = describeFile(dir, clip.poster, "poster");

@@ -3,6 +3,7 @@
 // renderer that draws its units and drains their encoders. The study folder's rules (records,
 // plan, manifest) are stimuli/study/study_folder.hpp's; this is the wiring to signer/ and
 // renderer/.
+#include "app/study_human.hpp"
 #include "app/study_runner.hpp"
 #include "renderer/video_encoder.hpp"
 #include "stimuli/story/story.hpp"
@@ -32,6 +33,7 @@ struct LoadedStudy {
     stimuli::StudyListing listing;
     std::string dataHash;  // everything every unit depends on (stimuli::studyDataHash)
     std::vector<stimuli::StudyUnit> units;
+    HumanClips humanClips;  // the lab's recordings of each unit (app/study_human.hpp)
 };
 
 // Renders the units of one run: one renderer (the device), encoders running beside it. A

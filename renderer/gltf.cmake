@@ -12,6 +12,7 @@ target_sources(signstim_renderer PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/gltf_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/image_io.cpp
   ${CMAKE_CURRENT_LIST_DIR}/video_encoder.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/video_decoder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/frame_sink.cpp
   ${CMAKE_CURRENT_LIST_DIR}/relay_sinks.cpp
   ${CMAKE_CURRENT_LIST_DIR}/drawing_raster.cpp)

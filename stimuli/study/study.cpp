@@ -24,7 +24,8 @@ public:
         study_.file = source_.file;
         if (!root.is_object()) source_.failAt("", "a study file is a JSON object {\"format\": \"signstim-study\", ...}");
         knownKeys(root, "", {"format", "version", "title", "seed", "participants", "versions", "stories", "phase2",
-                             "likertScale", "render", "quick", "outputs", "notes", "order", "session"});
+                             "likertScale", "render", "quick", "outputs", "notes", "order", "session",
+                             "humanVersions"});
         if (!root.contains("format")) source_.failAt("", "missing \"format\": \"signstim-study\"");
         source_.checkFormat("signstim-study", kStudyFormatVersion);
         if (!root.contains("version")) source_.failAt("", "missing \"version\": " + std::to_string(kStudyFormatVersion));
@@ -34,6 +35,11 @@ public:
         study_.participantsLine = source_.lineAt("/participants");
         readVersions(member(root, "", "versions"));
         readStories(member(root, "", "stories"));
+        if (root.contains("humanVersions")) {
+            std::vector<std::string> names;
+            for (VerbVersion v : study_.versions) names.push_back(toString(v));
+            study_.humanVersions = parseHumanVersions(source_, root["humanVersions"], names);
+        }
         if (root.contains("phase2")) readPhase2(root["phase2"]);
         if (root.contains("likertScale")) readScale(root["likertScale"]);
         study_.render = readRender(member(root, "", "render"), "/render", StudyRenderSettings{});
@@ -264,7 +270,10 @@ private:
         const std::string problem = designProblem(spec);
         if (problem.empty()) return;
         const bool aboutStories = problem.find("stories") != std::string::npos;
-        source_.failAt(aboutStories ? "/stories" : "/versions", "this design cannot be built: " + problem);
+        source_.failAt(aboutStories ? "/stories" : "/versions",
+                       "this design cannot be built: " + problem +
+                           (study_.humanVersions.empty() ? std::string()
+                                                         : " (the human versions in phase 1 count as versions)"));
     }
 
     const JsonSource& source_;
@@ -288,7 +297,8 @@ std::string StudyRenderSettings::text() const {
 StudyDesignSpec StudyFile::designSpec() const {
     StudyDesignSpec spec;
     spec.stories = stories.size();
-    spec.versions = versions.size();
+    spec.versions = phase1VersionCount(*this);  // the animated versions and the human ones in phase 1
+    if (const std::size_t panels = phase2VersionIndices(*this).size(); panels != spec.versions) spec.likertVersions = panels;
     spec.participants = participants;
     spec.likertTrials = phase2Sentences.size();
     spec.seed = seed;
@@ -346,6 +356,11 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
         listing.versions.push_back(toString(v));
         listing.versionLetters.push_back(versionLetter(v));
     }
+    const std::vector<const HumanVersion*> humans = orderedHumanVersions(study);
+    for (const HumanVersion* h : humans) {
+        listing.versions.push_back(h->name);
+        listing.versionLetters.push_back(h->letter);
+    }
     const auto clip = [&](const std::string& name) {
         ListedClip c;
         c.video = "clips/" + name + ".mp4";
@@ -365,6 +380,8 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
         for (const StoryQuestion& q : story.questions)
             listed.questions.push_back({q.text, q.choices, q.answer, q.probeVerb, q.probeSentence});
         for (VerbVersion v : study.versions) listed.clips.push_back(clip(storyClipName(s, v)));
+        for (const HumanVersion* h : humans)
+            if (!h->phase1Clips.empty()) listed.clips.push_back(clip(storyId(s) + "_version-" + h->name));
         listing.stories.push_back(std::move(listed));
     }
     StudyDesignSpec spec = study.designSpec();
@@ -376,7 +393,9 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
             listed.gloss = sentence.gloss;
             for (const StoryItem& item : sentence.items)
                 if (item.kind == StoryItemKind::Verb) listed.verb = item.gloss;
-            listed.panelVersion = likertPanels(spec, i);
+            // Phase 2's own versions (the animated ones and the human ones in phase 2) in study order.
+            const std::vector<std::size_t> phase2Versions = phase2VersionIndices(study);
+            for (std::size_t k : likertPanels(spec, i)) listed.panelVersion.push_back(phase2Versions.at(k));
             for (std::size_t v : listed.panelVersion) listed.panelCode += listing.versionLetters[v];
             listed.clip = clip(likertClipName(i, listed.panelCode));
             listing.sentences.push_back(std::move(listed));

@@ -4,6 +4,7 @@
 // checked here (errors name the file, line and field); the stories themselves are read by
 // stimuli/story/story.hpp, the schedules come from stimuli/study/study_design.hpp, and planStudy() turns
 // all of it into the listing the exports and the review page are written from.
+#include "stimuli/study/human_versions.hpp"
 #include "stimuli/study/study_design.hpp"
 #include "stimuli/study/study_listing.hpp"
 #include "stimuli/story/timing.hpp"
@@ -53,7 +54,10 @@ struct StudyFile {
     std::string title;
     std::uint64_t seed = 1;
     std::size_t participants = 24;
-    std::vector<VerbVersion> versions;  // the versions compared, in the study's order
+    std::vector<VerbVersion> versions;  // the animated versions compared, in the study's order
+    // Versions whose clips a lab supplies (stimuli/study/human_versions.hpp), after the animated
+    // ones in the version order; designSpec() counts them in the phases they are shown in.
+    std::vector<HumanVersion> humanVersions;
     struct StoryEntry {
         std::filesystem::path path;  // resolved against the study file's folder
         std::string written;         // as the study file writes it

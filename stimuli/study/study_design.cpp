@@ -42,10 +42,13 @@ std::string designProblem(const StudyDesignSpec& spec) {
                std::to_string(spec.versions) + " stories" +
                (below > 0 ? " such as " + std::to_string(below) + " or " + std::to_string(above) : " such as " + std::to_string(above));
     }
-    if (spec.likertTrials % spec.versions != 0) {
-        const std::size_t above = (spec.likertTrials / spec.versions + 1) * spec.versions;
+    const std::size_t panels = spec.phase2Versions();
+    if (panels > 8) return "at most 8 versions side by side (panels A to H)";
+    if (spec.likertTrials > 0 && panels < 2) return "phase 2 compares at least 2 versions side by side";
+    if (spec.likertTrials % panels != 0) {
+        const std::size_t above = (spec.likertTrials / panels + 1) * panels;
         return std::to_string(spec.likertTrials) + " side-by-side sentences cannot put every version in every panel equally often: use a multiple of " +
-               std::to_string(spec.versions) + " (e.g. " + std::to_string(above) + "), or 0 for no phase 2";
+               std::to_string(panels) + " (e.g. " + std::to_string(above) + "), or 0 for no phase 2";
     }
     return {};
 }
@@ -61,8 +64,9 @@ std::size_t participantGroup(const StudyDesignSpec& spec, std::size_t participan
 }
 
 std::vector<std::size_t> likertPanels(const StudyDesignSpec& spec, std::size_t sentence) {
-    std::vector<std::size_t> panels(spec.versions);
-    for (std::size_t k = 0; k < spec.versions; ++k) panels[k] = (k + sentence) % spec.versions;
+    const std::size_t versions = spec.phase2Versions();
+    std::vector<std::size_t> panels(versions);
+    for (std::size_t k = 0; k < versions; ++k) panels[k] = (k + sentence) % versions;
     return panels;
 }
 

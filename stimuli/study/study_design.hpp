@@ -39,6 +39,10 @@ struct StudyDesignSpec {
     std::size_t likertTrials = 8;       // phase-2 sentences (0: no phase 2)
     std::uint64_t seed = 1;
     StoryOrder order = StoryOrder::Random;  // phase 1's story order (the default keeps old studies unchanged)
+    // Versions phase 2 compares when they differ from phase 1's (0: `versions`): a human-video
+    // version may be in one phase only (stimuli/study/human_versions.hpp).
+    std::size_t likertVersions = 0;
+    std::size_t phase2Versions() const { return likertVersions > 0 ? likertVersions : versions; }
 };
 
 // Why a design cannot be built (empty when it can): e.g. stories not a multiple of versions,
@@ -66,7 +70,7 @@ struct ParticipantSchedule {
 std::size_t phase1Version(const StudyDesignSpec& spec, std::size_t story, std::size_t group);
 // Group of `participant` (permuted blocks of `versions`).
 std::size_t participantGroup(const StudyDesignSpec& spec, std::size_t participant);
-// The panel arrangement of phase-2 sentence `sentence` (independent of participants: each
+// The panel arrangement of phase-2 sentence `sentence`, over phase2Versions() (independent of participants: each
 // side-by-side clip is rendered once).
 std::vector<std::size_t> likertPanels(const StudyDesignSpec& spec, std::size_t sentence);
 

@@ -77,7 +77,7 @@ void checkStudy(const StudyListing& listing) {
         }
     }
     for (const ListedSentence& sentence : listing.sentences) {
-        if (sentence.panelVersion.size() != versions)
+        if (sentence.panelVersion.size() != likertPanelCount(listing) || sentence.panelVersion.size() > versions)
             inconsistent(sentence.id + ": " + count(sentence.panelVersion.size()) + " panels for " + count(versions) +
                          " versions");
         for (std::size_t version : sentence.panelVersion)
@@ -207,7 +207,7 @@ std::vector<std::string> conditionsColumns(const StudyListing& listing) {
         columns.push_back(questionColumn(q, "answer_index"));
         columns.push_back(questionColumn(q, "answer_text"));
     }
-    for (std::size_t panel = 0; panel < listing.versions.size(); ++panel) columns.push_back(panelColumn(panel));
+    for (std::size_t panel = 0; panel < likertPanelCount(listing); ++panel) columns.push_back(panelColumn(panel));
     columns.push_back("panel_code");
     return columns;
 }
@@ -321,7 +321,7 @@ constexpr std::string_view responseSheetCss =
 
 std::string ratingTable(const StudyListing& listing) {
     std::string html = "<table class=\"scale\">\n";
-    for (std::size_t panel = 0; panel < listing.versions.size(); ++panel) {
+    for (std::size_t panel = 0; panel < likertPanelCount(listing); ++panel) {
         html += "<tr><th scope=\"row\">Panel " + panelLabel(panel) + "</th>";
         for (int rating = listing.likertMinimum; rating <= listing.likertMaximum; ++rating)
             html += "<td><span class=\"box\">" + std::to_string(rating) + "</span></td>";
@@ -374,7 +374,7 @@ std::string gorillaIntro(const StudyListing& listing) {
 }
 
 std::string gorillaPart2(const StudyListing& listing) {
-    return "Part 2: each video shows one sentence signed " + count(listing.versions.size()) +
+    return "Part 2: each video shows one sentence signed " + count(likertPanelCount(listing)) +
            " times side by side; the panels differ only in how the verb is signed. Replay it as often as you like, "
            "then rate the quality of the verb in each panel from " +
            std::to_string(listing.likertMinimum) + " (very poor) to " + std::to_string(listing.likertMaximum) +

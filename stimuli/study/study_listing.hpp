@@ -104,4 +104,10 @@ struct StudyListing {
     std::vector<std::string> draftAnimator;
 };
 
+// How many panels each phase-2 clip has: every version, unless a version is left out of phase 2
+// (a human-video version in phase 1 only, stimuli/study/human_versions.hpp).
+inline std::size_t likertPanelCount(const StudyListing& listing) {
+    return listing.sentences.empty() ? listing.versions.size() : listing.sentences.front().panelVersion.size();
+}
+
 }  // namespace signstim::stimuli

@@ -30,3 +30,8 @@ signstim_add_test(signstim_app_study_annotations_tests
   SOURCES study_annotations_cli_test.cpp
   LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
 add_dependencies(signstim_app_study_annotations_tests signstim)
+# Human-video versions (issue 24 §2): synthetic recordings probed, normalised, hashed, resumed, sharded.
+signstim_add_test(signstim_app_study_human_tests
+  SOURCES study_human_cli_test.cpp
+  LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
+add_dependencies(signstim_app_study_human_tests signstim)
