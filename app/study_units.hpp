@@ -32,6 +32,10 @@ struct LoadedStudy {
     stimuli::StudyListing listing;
     std::string dataHash;  // everything every unit depends on (stimuli::studyDataHash)
     std::vector<stimuli::StudyUnit> units;
+    // Issue 24: each instruction page's gloss parsed (the pages of study.instructions, in order;
+    // empty when the study shows instructions in English only). app/study_questions.hpp.
+    std::vector<std::vector<stimuli::StorySentence>> instructionSentences;
+    std::vector<std::string> signedTextNotes;  // words fingerspelled in the instructions, for --check
 };
 
 // Renders the units of one run: one renderer (the device), encoders running beside it. A

@@ -4,6 +4,7 @@
 // checked here (errors name the file, line and field); the stories themselves are read by
 // stimuli/story/story.hpp, the schedules come from stimuli/study/study_design.hpp, and planStudy() turns
 // all of it into the listing the exports and the review page are written from.
+#include "stimuli/study/question_clips.hpp"
 #include "stimuli/study/study_design.hpp"
 #include "stimuli/study/study_listing.hpp"
 #include "stimuli/story/timing.hpp"
@@ -73,6 +74,13 @@ struct StudyFile {
     // questions asked before part 1, by id (kBackgroundQuestions), in the study's order.
     std::string ratingPrompt = std::string(kDefaultRatingPrompt);
     std::vector<std::string> background = {kBackgroundQuestions.begin(), kBackgroundQuestions.end()};
+    // Issue 24 (question_clips.hpp): "session": {"questions": "asl"|"english"|"both",
+    // "instructions": {"show": ..., "welcome": {...}, "part2": {...}}}. The pages the study file
+    // gives; the runner adds the others from SCENES/studies/instructions.json.
+    std::string questionsShown = "both";
+    std::string instructionsShown = "both";
+    std::vector<StudyInstruction> instructions;
+    int sessionLine = 0;
     std::string experiment;                     // outputs.experiment: "jspsych" (docs/experiment.md), "none", or "" (not said)
     int participantsLine = 0, storiesLine = 0, versionsLine = 0;
 
