@@ -65,9 +65,9 @@ struct StoryQuestion {
     // Issue 24: the question in ASL gloss ("TOM ASK WHO"), parsed by the story's own gloss
     // parser in the story's context (its characters, placed by the story) as signed text
     // (parseSignedGloss's rules); empty when the file gives none. Rendered as the question clip.
-    std::string gloss;
-    StorySentence sentence;
-    std::vector<std::string> fingerspelled;  // words of `gloss` no sign has: fingerspelled (story --check notes them)
+    std::string gloss{};
+    StorySentence sentence{};
+    std::vector<std::string> fingerspelled{};  // words of `gloss` no sign has: fingerspelled (story --check notes them)
 };
 
 struct Story {

@@ -33,8 +33,8 @@ struct ListedQuestion {
     int probeSentence = 0;             // 0-based sentence index within the story
     // Issue 24: the question in gloss and its signed clip (stimuli/study/question_clips.hpp);
     // empty when the story gives no gloss or the study shows the questions in English only.
-    std::string gloss;
-    ListedClip clip;
+    std::string gloss{};
+    ListedClip clip{};
 };
 
 // Issue 24: an instruction page of the experiment ("welcome", "part2"), its English text, its
