@@ -6,6 +6,7 @@
 #include "stimuli/json_source.hpp"
 #include "stimuli/story/story.hpp"
 #include "stimuli/study/question_clips.hpp"
+#include "stimuli/study/review_page.hpp"
 #include "stimuli/study/study.hpp"
 #include "stimuli/study/study_exports.hpp"
 #include "stimuli/study/study_folder.hpp"
@@ -234,4 +235,24 @@ TEST(ExperimentTimeline, ASignedQuestionCarriesItsClipForEveryVersion) {
     const StudyListing english = signstim::stimuli::testing::reviewFixtureListing({.stories = 4, .participants = 4, .likertSentences = 4});
     const nlohmann::json plain = nlohmann::json::parse(jspsychTimelineVariables(english, 0));
     EXPECT_FALSE(plain["phase1"][0]["questions"][0].contains("video"));
+}
+
+TEST(ReviewPage, ASignedQuestionsClipComesBeforeItsTextAndTheInstructionsAreShown) {
+    signstim::stimuli::testing::ReviewFixtureShape shape{.stories = 4, .participants = 4, .likertSentences = 4};
+    shape.signedQuestions = true;
+    const StudyListing listing = signstim::stimuli::testing::reviewFixtureListing(shape);
+    const std::string html = reviewPageHtml(listing);
+    const ListedQuestion& question = listing.stories[1].questions[2];
+    const std::size_t clip = html.find("src=\"" + question.clip.video + "\"");
+    ASSERT_NE(clip, std::string::npos);
+    const std::size_t text = html.find(escapeHtml(question.text), clip);
+    ASSERT_NE(text, std::string::npos);
+    EXPECT_LT(html.find("data-expected-duration", clip), text) << "the clip carries its duration for the checker";
+    EXPECT_NE(html.find("id=\"instructions\""), std::string::npos);
+    EXPECT_NE(html.find("src=\"clips/instructions-welcome.mp4\""), std::string::npos);
+    // In English, no question clip and no instruction clip.
+    const std::string english =
+        reviewPageHtml(signstim::stimuli::testing::reviewFixtureListing({.stories = 4, .participants = 4, .likertSentences = 4}));
+    EXPECT_EQ(english.find("_question-"), std::string::npos);
+    EXPECT_EQ(english.find("instructions-welcome"), std::string::npos);
 }
