@@ -2,6 +2,7 @@
 
 #include "app/cli_values.hpp"
 #include "app/progress.hpp"
+#include "app/study_questions.hpp"
 #include "app/study_units.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -91,6 +92,7 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
         throw InputError(study.file, s.settings.fpsLine, fpsField, e.detail());
     }
     s.pngFrames = options.pngFrames || study.pngFrames;
+    prepareSignedText(s);  // issue 24: questions and instructions in ASL
     s.experiment = options.experiment.empty() ? study.experiment : options.experiment;  // may still be "" or "none"
     s.listing = planStudy(s.study, s.stories, s.phase2 ? &*s.phase2 : nullptr, SIGNSTIM_VERSION, s.pngFrames);
     // Draft animator files (issue 22): refused unless --allow-draft-animator; listed either way.
@@ -157,6 +159,15 @@ Story unitStory(const LoadedStudy& s, const StudyUnit& unit) {
     return one;
 }
 
+std::vector<Timeline> unitTimelines(const LoadedStudy& s, const Story& story);
+
+// A unit's timelines: a story's or sentence's in every version, or (issue 24) one per signed
+// question or instruction clip.
+std::vector<Timeline> timelinesOfUnit(const LoadedStudy& s, const StudyUnit& unit) {
+    if (unit.kind != StudyUnitKind::Stimulus) return signedTextTimelines(s, unit);
+    return unitTimelines(s, unitStory(s, unit));
+}
+
 std::vector<Timeline> unitTimelines(const LoadedStudy& s, const Story& story) {
     TimelineSources sources = s.world->sources(story);
     sources.slotVersions = studyVersions(s);
@@ -217,7 +228,17 @@ void checkStudy(const StudyRunOptions& options) {
     useExperiment(s, "");
     double storySeconds = 0.0, likertSeconds = 0.0;
     std::vector<std::string> notes = s.world->lexiconOverrideNotes();  // authoring notes (story_world.hpp)
+    notes.insert(notes.end(), s.signedTextNotes.begin(), s.signedTextNotes.end());
+    double signedSeconds = 0.0;
+    std::size_t signedClips = 0;
     for (const StudyUnit& unit : s.units) {
+        if (unit.kind != StudyUnitKind::Stimulus) {
+            for (const Timeline& t : signedTextTimelines(s, unit)) {
+                signedSeconds += t.durationSeconds;
+                ++signedClips;
+            }
+            continue;
+        }
         const Story story = unitStory(s, unit);
         const std::vector<Timeline> timelines = unitTimelines(s, story);
         (unit.story ? storySeconds : likertSeconds) += timelines.front().durationSeconds;
@@ -238,6 +259,9 @@ void checkStudy(const StudyRunOptions& options) {
         std::printf("  human version \"%s\" (%s): %zu recording%s probed\n", h.name.c_str(),
                     h.phase2Clips.empty() ? "phase 1" : "phases 1 and 2", recordings, recordings == 1 ? "" : "s");
     }
+    std::printf("  questions: %s, instructions: %s; %zu signed question and instruction clip%s, %.0f s\n",
+                s.study.questionsShown.c_str(), s.study.instructionsShown.c_str(), signedClips, signedClips == 1 ? "" : "s",
+                signedSeconds);
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
 }
 
@@ -294,7 +318,15 @@ StudyRunReport runStudy(const StudyRunOptions& options) {
             ++report.skipped;
             continue;
         }
-        Work w{unit, unitTimelines(s, unitStory(s, unit)), 0};
+        Work w{unit, timelinesOfUnit(s, unit), 0};
+        if (unit.kind != StudyUnitKind::Stimulus) {
+            // Signed questions and instructions: one clip per timeline, each drawn in full.
+            for (const Timeline& t : w.timelines)
+                w.weight += static_cast<double>(frameCount(t.durationSeconds, s.frameRate.value()));
+            totalWeight += w.weight;
+            work.push_back(std::move(w));
+            continue;
+        }
         double duration = 0.0;
         for (const Timeline& t : w.timelines) duration = std::max(duration, t.durationSeconds);
         // A shared frame is drawn once, a frame in a verb slot once per version; a side-by-side

@@ -102,6 +102,8 @@ struct UnitRenderer::State {
             if (p.done.valid()) p.done.wait();
     }
 
+    struct Job;  // below
+
     void render(const StudyUnit& unit, const std::vector<Timeline>& timelines, const std::string& inputHash,
                 const std::function<void(double)>& progress, StudyRunReport& report) {
         std::vector<std::unique_ptr<signer::TimelineClip>> clips;
@@ -115,6 +117,10 @@ struct UnitRenderer::State {
         auto job = std::make_shared<Job>();
         job->unit = unit;
         job->inputHash = inputHash;
+        if (unit.kind != StudyUnitKind::Stimulus) {
+            renderSignedText(job, clipPointers, timelines, progress, report);
+            return;
+        }
         std::vector<render::FrameSink*> entries;
         // The lab's recordings this unit shows (human-video versions), in version / panel order.
         const auto humanEntry = s_.humanClips.find(unit.id);
@@ -237,6 +243,66 @@ struct UnitRenderer::State {
         report.annotationSeconds += secondsSince(annotating);
 
         // Finish on a worker: encoders drain while the next unit renders.
+        const fs::path dir = dir_;
+        const render::FrameRate rate = s_.frameRate;
+        const StudyRenderSettings settings = s_.settings;
+        Pending pending;
+        pending.encoders = job->sinks.size();
+        pending.done = std::async(std::launch::async, [job, dir, rate, settings] { finishUnit(*job, dir, rate, settings); });
+        pending_.push_back(std::move(pending));
+    }
+
+    // Issue 24: a unit of signed questions or instructions: each clip drawn on its own, one after
+    // the other (they are short and differ from every other clip), encoded as the stories are.
+    void renderSignedText(const std::shared_ptr<Job>& job, const std::vector<const signer::Clip*>& clips,
+                          const std::vector<Timeline>& timelines, const std::function<void(double)>& progress,
+                          StudyRunReport& report) {
+        const double fps = s_.frameRate.value();
+        std::vector<json> shows;
+        if (job->unit.kind == StudyUnitKind::Questions) {
+            const ListedStory& story = s_.listing.stories[job->unit.index];
+            for (std::size_t q = 0; q < story.questions.size(); ++q) {
+                if (story.questions[q].clip.video.empty()) continue;
+                job->clips.push_back(story.questions[q].clip);
+                shows.push_back({{"question", q + 1}, {"story", story.id}, {"gloss", story.questions[q].gloss},
+                                 {"text", story.questions[q].text}, {"verbVersion", "uninflected"}});
+            }
+        } else {
+            for (const ListedInstruction& page : s_.listing.instructions) {
+                if (page.clip.video.empty()) continue;
+                job->clips.push_back(page.clip);
+                shows.push_back({{"instructions", page.page}, {"gloss", page.gloss}});
+            }
+        }
+        if (job->clips.size() != clips.size())
+            throw std::logic_error("study unit " + job->unit.id + ": " + std::to_string(clips.size()) + " timelines for " +
+                                   std::to_string(job->clips.size()) + " clips");
+        job->shows = shows;
+        for (std::size_t i = 0; i < clips.size(); ++i) {
+            // The poster: the middle of the clip (a question has no verb slot to show).
+            const auto poster = static_cast<std::uint64_t>(0.5 * timelines[i].durationSeconds * fps);
+            job->sinks.push_back(makeClipSinks(dir_, job->clips[i], s_.frameRate, poster));
+        }
+        waitForEncoders(job->sinks.size(), report);
+        const auto start = Clock::now();
+        std::uint64_t total = 0, before = 0;
+        for (const Timeline& t : timelines)
+            total += static_cast<std::uint64_t>(std::floor(t.durationSeconds * fps + 1e-9)) + 1;
+        for (std::size_t i = 0; i < clips.size(); ++i) {
+            signer::ClipRenderOptions ro;
+            ro.framesPerSecond = fps;
+            const std::uint64_t n = signer::renderClips(
+                renderer_, handle_, signer_.avatar(), signer_.rig(), {clips[i]}, {}, ro, *job->sinks[i]->entry(),
+                [&](std::uint64_t done, std::uint64_t) {
+                    progress(static_cast<double>(before + done) / static_cast<double>(std::max<std::uint64_t>(total, 1)));
+                });
+            before += n;
+            job->frames += n;
+            report.renderedImages += n;
+            report.clipFrames += n;
+        }
+        report.renderSeconds += secondsSince(start);
+        failOnValidationMessages(renderer_);
         const fs::path dir = dir_;
         const render::FrameRate rate = s_.frameRate;
         const StudyRenderSettings settings = s_.settings;

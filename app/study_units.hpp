@@ -34,6 +34,10 @@ struct LoadedStudy {
     std::string dataHash;  // everything every unit depends on (stimuli::studyDataHash)
     std::vector<stimuli::StudyUnit> units;
     HumanClips humanClips;  // the lab's recordings of each unit (app/study_human.hpp)
+    // Issue 24: each instruction page's gloss parsed (the pages of study.instructions, in order;
+    // empty when the study shows instructions in English only). app/study_questions.hpp.
+    std::vector<std::vector<stimuli::StorySentence>> instructionSentences;
+    std::vector<std::string> signedTextNotes;  // words fingerspelled in the instructions, for --check
 };
 
 // Renders the units of one run: one renderer (the device), encoders running beside it. A

@@ -258,6 +258,13 @@ private:
              column);
     }
 
+    bool spellable(const std::string& word) const {
+        if (word.empty() || word.size() > limits::kFingerspelledLetters) return false;
+        return std::all_of(word.begin(), word.end(), [&](char c) {
+            return c >= 'A' && c <= 'Z' && (!vocabulary_.canFingerspell || vocabulary_.canFingerspell(c));
+        });
+    }
+
     void requireSpellable(const std::string& letters, int line, int column, const std::string& field) const {
         if (letters.empty()) fail(line, field, "nothing to fingerspell", column);
         if (letters.size() > limits::kFingerspelledLetters)
@@ -301,16 +308,17 @@ private:
             if (gloss.find_first_of("\"\\") != std::string::npos)
                 fail(where.line, field, "a sentence of gloss holds no quotes or backslashes", where.column);
             // Column of the sentence's first character: just after its opening quote.
-            readSentence(gloss, where.line, where.column + 1, field);
+            story_.sentences.push_back(readSentence(gloss, where.line, where.column + 1, field));
         }
     }
 
-    void readSentence(const std::string& gloss, int line, int firstColumn, const std::string& field) {
+    StorySentence readSentence(const std::string& gloss, int line, int firstColumn, const std::string& field) {
         StorySentence sentence;
         sentence.gloss = gloss;
         sentence.line = line;
         const GlossParse parsed = parseGloss(gloss);
-        auto column = [&](int withinSentence) { return firstColumn + withinSentence - 1; };
+        // firstColumn 0: where the gloss stands is unknown (signed text given outside a JSON file's text).
+        auto column = [&](int withinSentence) { return firstColumn > 0 ? firstColumn + withinSentence - 1 : 0; };
         if (parsed.error) fail(line, field, parsed.error->message, column(parsed.error->column));
         if (parsed.items.size() > limits::kSentenceSigns)
             fail(line, field,
@@ -391,6 +399,11 @@ private:
                     item.character = character;
                     const StoryCharacter& c = story_.characters[static_cast<std::size_t>(character)];
                     if (c.nameSign.empty()) item.letters = c.spelled;
+                } else if (signedText_ && !isSign(word) && !written.hasArgumentList && spellable(word)) {
+                    // Signed text (parseSignedGloss): a word the lexicon lacks is fingerspelled.
+                    item.kind = StoryItemKind::Fingerspelling;
+                    item.letters = word;
+                    spelledWords_.push_back(word);
                 } else {
                     requireSign(word, line, item.column, field);
                     if (written.hasArgumentList)
@@ -407,7 +420,7 @@ private:
         sentence.markers = resolveMarkers(parsed.markers, story_, line, [&](int withinSentence, const std::string& message) {
             fail(line, field, message, column(withinSentence));
         });
-        story_.sentences.push_back(std::move(sentence));
+        return sentence;
     }
 
     void readVerbArguments(const VerbDefinition& verb, const GlossItem& written, StoryItem& item, int line,
@@ -453,6 +466,8 @@ private:
             if (!verb.objectOnly())
                 for (std::size_t i = index; i-- > 0 && verbItem.subject < 0;)
                     if (isReferent(sentence.items[i])) verbItem.subject = sentence.items[i].character;
+            // Signed text may ask for an argument ("WHO ASK ANN"): signed uninflected (issue 24).
+            if (signedText_) return;
             if (verbItem.object < 0)
                 fail(verbItem.line, field,
                      verb.name + " needs its object: name or point to a character after the verb (" + verb.name +
@@ -513,8 +528,9 @@ private:
             const int line = elementPosition("questions", i).line;
             if (!entry.is_object()) fail(line, pointer, "expected {\"question\": ..., \"choices\": [...], \"answer\": \"A\"}");
             for (const auto& [key, value] : entry.items())
-                if (key != "question" && key != "choices" && key != "answer" && key != "probes")
-                    fail(line, pointer + "/" + key, "unknown field '" + key + "' (known: question, choices, answer, probes)");
+                if (key != "question" && key != "choices" && key != "answer" && key != "probes" && key != "gloss")
+                    fail(line, pointer + "/" + key,
+                         "unknown field '" + key + "' (known: question, gloss, choices, answer, probes)");
             StoryQuestion question;
             question.line = line;
             if (!entry.contains("question") || !entry["question"].is_string() || entry["question"].get<std::string>().empty())
@@ -555,14 +571,59 @@ private:
             if (!hasVerb)
                 fail(line, pointer + "/probes/verb",
                      "sentence " + std::to_string(sentence) + " (\"" + probed.gloss + "\") has no verb " + question.probeVerb);
+            if (entry.contains("gloss")) readQuestionGloss(entry["gloss"], i, question);
             story_.questions.push_back(std::move(question));
         }
     }
 
+    // Issue 24: the question in gloss, read like a sentence of the story (after all of them: the
+    // characters are placed) as signed text.
+    void readQuestionGloss(const json& value, std::size_t index, StoryQuestion& question) {
+        const std::string pointer = "/questions/" + std::to_string(index) + "/gloss";
+        const int line = question.line;
+        if (!value.is_string() || value.get<std::string>().empty())
+            fail(line, pointer, "expected the question in gloss, e.g. \"TOM ASK WHO\"");
+        question.gloss = value.get<std::string>();
+        if (question.gloss.find_first_of("\"\\") != std::string::npos)
+            fail(line, pointer, "a question in gloss holds no quotes or backslashes");
+        // The column of its first character: the value's opening quote after "gloss" in the question.
+        TextPosition where{line, 0};
+        const auto found = elementOffsets_.find("questions");
+        if (found != elementOffsets_.end() && index < found->second.size()) {
+            const std::size_t key = source_.text.find("\"gloss\"", found->second[index]);
+            const std::size_t quote = key == std::string::npos ? key : source_.text.find('"', key + 7);
+            if (quote != std::string::npos) where = positionOf(source_, quote);
+        }
+        const bool wasSignedText = signedText_;
+        signedText_ = true;
+        spelledWords_.clear();
+        question.sentence = readSentence(question.gloss, where.line, where.column > 0 ? where.column + 1 : 0, pointer);
+        question.fingerspelled = spelledWords_;
+        signedText_ = wasSignedText;
+    }
+
+public:
+    // parseSignedGloss: the characters of `context` (placed), then one sentence of signed text.
+    StorySentence signedGloss(const std::string& gloss, const Story* context, int line, int column, const std::string& field,
+                              std::vector<std::string>* fingerspelled) {
+        if (context) story_.characters = context->characters;
+        story_.file = source_.file;
+        placed_.assign(story_.characters.size(), true);
+        signedText_ = true;
+        if (gloss.empty()) fail(line, field, "expected signed text in gloss");
+        if (gloss.find_first_of("\"\\") != std::string::npos) fail(line, field, "gloss holds no quotes or backslashes", column);
+        StorySentence sentence = readSentence(gloss, line, column, field);
+        if (fingerspelled) *fingerspelled = spelledWords_;
+        return sentence;
+    }
+
+private:
     const JsonSource& source_;
     const StoryVocabulary& vocabulary_;
     Story story_;
     std::vector<bool> placed_;
+    bool signedText_ = false;                 // reading signed text (parseSignedGloss's rules)
+    std::vector<std::string> spelledWords_;   // words signed text fingerspells, in order
     mutable std::map<std::string, std::vector<std::size_t>> elementOffsets_;  // elementPosition's cache
 };
 
@@ -578,6 +639,14 @@ std::string choiceLetter(int index) { return std::string(1, static_cast<char>('A
 
 Story parseStory(const JsonSource& source, const StoryVocabulary& vocabulary) {
     return StoryReader(source, vocabulary).read();
+}
+
+StorySentence parseSignedGloss(const std::string& gloss, const Story* context, const StoryVocabulary& vocabulary,
+                               const std::string& file, int line, int column, const std::string& field,
+                               std::vector<std::string>* fingerspelled) {
+    JsonSource source;
+    source.file = file;
+    return StoryReader(source, vocabulary).signedGloss(gloss, context, line, column, field, fingerspelled);
 }
 
 Story loadStory(const std::filesystem::path& file, const StoryVocabulary& vocabulary) {

@@ -75,6 +75,12 @@ struct StoryQuestion {
     int probeSentence = 0;             // 0-based index of the sentence it asks about
     std::string probeVerb;             // the verb it asks about ("ASK")
     int line = 0;
+    // Issue 24: the question in ASL gloss ("TOM ASK WHO"), parsed by the story's own gloss
+    // parser in the story's context (its characters, placed by the story) as signed text
+    // (parseSignedGloss's rules); empty when the file gives none. Rendered as the question clip.
+    std::string gloss{};
+    StorySentence sentence{};
+    std::vector<std::string> fingerspelled{};  // words of `gloss` no sign has: fingerspelled (story --check notes them)
 };
 
 struct Story {
@@ -109,6 +115,17 @@ inline constexpr int kStoryFormatVersion = 1;
 
 Story parseStory(const JsonSource& source, const StoryVocabulary& vocabulary);
 Story loadStory(const std::filesystem::path& file, const StoryVocabulary& vocabulary);
+
+// Signed text outside a story's sentences (issue 24: comprehension questions, instructions):
+// one sentence of gloss, read by the same parser as a story sentence, with three differences:
+// a word that is no sign, verb or character is fingerspelled (its letters; listed in
+// `fingerspelled` for `story --check`), an indicating verb may lack its subject or object (a
+// question asks for one: "WHO ASK ANN"; it is signed uninflected, docs/study.md), and the
+// characters of `context` (nullptr: none) count as placed. Errors name `file`, `line`,
+// `column` (of the gloss's first character; 0: unknown) and `field`.
+StorySentence parseSignedGloss(const std::string& gloss, const Story* context, const StoryVocabulary& vocabulary,
+                               const std::string& file, int line, int column, const std::string& field,
+                               std::vector<std::string>* fingerspelled = nullptr);
 
 // "A".."D" for 0..3.
 std::string choiceLetter(int index);

@@ -135,6 +135,12 @@ std::vector<std::string> StoryWorld::fingerspellingNotes(const Story& story) con
         }
         notes.push_back(note + "; add the sign with --lexicon, give \"nameSign\", or write \"spelled\" to say the letters are meant");
     }
+    // Issue 24: words of a question's gloss that no sign has are fingerspelled.
+    for (std::size_t q = 0; q < story.questions.size(); ++q)
+        for (const std::string& word : story.questions[q].fingerspelled)
+            notes.push_back(story.file + ":" + std::to_string(story.questions[q].line) + ": question " + std::to_string(q + 1) +
+                            ": " + word + " will be fingerspelled: no sign of the lexicon has the gloss " + word +
+                            "; add the sign with --lexicon, or write fs-" + word + " to say the letters are meant");
     return notes;
 }
 

@@ -473,7 +473,9 @@ private:
 
     void addVerb(const StoryItem& item, int sentence, int index, bool beforeBoundary) {
         const double subject = item.subject >= 0 ? story_.characters[static_cast<std::size_t>(item.subject)].position : 0.0;
-        const double object = story_.characters[static_cast<std::size_t>(item.object)].position;
+        // A question's verb may lack its object ("TOM ASK WHO", issue 24): signed uninflected,
+        // toward the centre of the arc.
+        const double object = item.object >= 0 ? story_.characters[static_cast<std::size_t>(item.object)].position : 0.0;
         const double rate = options_.rate / itemScale("", beforeBoundary);
         // Every version's path at its own timing, slowed where it would be faster than human;
         // the slot is as long as the longest, the transitions in and out as long as the

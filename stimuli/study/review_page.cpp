@@ -109,6 +109,7 @@ public:
         participants();
         stories();
         sentences();
+        instructions();
         out_ += "</main>\n";
         out_ += "<footer>Written by signstim " + escapeHtml(listing_.toolVersion) + " from <code>" +
                 escapeHtml(listing_.studyFile) +
@@ -189,14 +190,23 @@ private:
         out_ += "</figcaption></figure>";
     }
 
-    void questions(const ListedStory& story) {
+    // `withClips`: each signed question's clip and gloss before its text and choices, as the
+    // participant sees it (issue 24; the story sections, not the participants' trial tables).
+    void questions(const ListedStory& story, bool withClips = false) {
         if (story.questions.empty()) {
             out_ += "<p class=\"muted\">no questions</p>";
             return;
         }
         out_ += "<ol class=\"questions\">\n";
-        for (const ListedQuestion& question : story.questions) {
-            out_ += "<li><p>" + escapeHtml(question.text) + "</p><ol class=\"choices\" type=\"A\">";
+        for (std::size_t q = 0; q < story.questions.size(); ++q) {
+            const ListedQuestion& question = story.questions[q];
+            out_ += "<li>";
+            if (withClips && !question.clip.video.empty()) {
+                out_ += "<div class=\"question-clip\">";
+                video(question.clip, "metadata", story.id + " question " + std::to_string(q + 1) + " in ASL");
+                out_ += "<p class=\"muted\">asked in ASL: <span class=\"gloss\">" + escapeHtml(question.gloss) + "</span></p></div>";
+            }
+            out_ += "<p>" + escapeHtml(question.text) + "</p><ol class=\"choices\" type=\"A\">";
             for (std::size_t c = 0; c < question.choices.size(); ++c) {
                 const bool answer = static_cast<int>(c) == question.answer;
                 out_ += answer ? "<li class=\"answer\">" : "<li>";
@@ -465,7 +475,7 @@ private:
             for (const std::string& gloss : story.sentences)
                 out_ += "<li><span class=\"gloss\">" + escapeHtml(gloss) + "</span></li>";
             out_ += "</ol>\n<h4>Questions</h4>\n";
-            questions(story);
+            questions(story, true);
             out_ += "\n</section>\n";
         }
         out_ += "</section>\n";
@@ -485,6 +495,22 @@ private:
             video(sentence.clip, "metadata", sentence.id, true);
             mapping(sentence);
             out_ += "</div>\n</section>\n";
+        }
+        out_ += "</section>\n";
+    }
+
+    // Issue 24: the experiment's instruction pages, their clips and text.
+    void instructions() {
+        if (listing_.instructions.empty()) return;
+        out_ += "<section id=\"instructions\">\n<h2>Instructions</h2>\n";
+        out_ += "<p class=\"note\">What the experiment's instruction pages show (" + escapeHtml(listing_.instructionsShown) +
+                "); questions are asked in " + escapeHtml(listing_.questionsShown) + ".</p>\n";
+        for (const ListedInstruction& page : listing_.instructions) {
+            out_ += "<section class=\"instruction\">\n<h3>" + escapeHtml(page.page) + "</h3>\n";
+            if (!page.clip.video.empty()) video(page.clip, "metadata", "instructions " + page.page + " in ASL");
+            out_ += "<p>" + escapeHtml(page.text) + "</p>\n<ol class=\"sentences\">";
+            for (const std::string& gloss : page.gloss) out_ += "<li><span class=\"gloss\">" + escapeHtml(gloss) + "</span></li>";
+            out_ += "</ol>\n</section>\n";
         }
         out_ += "</section>\n";
     }

@@ -185,8 +185,26 @@ private:
     void readSession(const json& session) {
         if (!session.is_object())
             source_.failAt("/session", "expected {\"ratingPrompt\": \"...\", \"background\": [\"hearing\", ...]}");
-        knownKeys(session, "/session", {"ratingPrompt", "background"});
+        knownKeys(session, "/session", {"ratingPrompt", "background", "questions", "instructions"});
+        study_.sessionLine = source_.lineAt("/session");
         if (session.contains("ratingPrompt")) study_.ratingPrompt = string(session, "/session", "ratingPrompt");
+        // Issue 24: questions and instructions in ASL (question_clips.hpp).
+        const auto show = [&](const json& value, const std::string& at) {
+            const std::string text = value.is_string() ? value.get<std::string>() : "";
+            if (!isShowChoice(text))
+                source_.failAt(at, "expected \"asl\" (the signed clip), \"english\" (the text) or \"both\" (the default)");
+            return text;
+        };
+        if (session.contains("questions")) study_.questionsShown = show(session["questions"], "/session/questions");
+        if (session.contains("instructions")) {
+            const json& instructions = session["instructions"];
+            if (!instructions.is_object())
+                source_.failAt("/session/instructions",
+                               "expected {\"show\": \"both\", \"welcome\": {\"text\": ..., \"gloss\": [...]}, \"part2\": {...}}");
+            if (instructions.contains("show"))
+                study_.instructionsShown = show(instructions["show"], "/session/instructions/show");
+            study_.instructions = readInstructionPages(source_, "/session/instructions", {"show"});
+        }
         if (!session.contains("background")) return;
         const json& list = session["background"];
         std::string known;
@@ -352,6 +370,8 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
     listing.likertMaximum = study.likertMaximum;
     listing.ratingPrompt = study.ratingPrompt;
     listing.background = study.background;
+    listing.questionsShown = study.questionsShown;
+    listing.instructionsShown = study.instructionsShown;
     for (VerbVersion v : study.versions) {
         listing.versions.push_back(toString(v));
         listing.versionLetters.push_back(versionLetter(v));
@@ -377,12 +397,25 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
         listed.title = story.title;
         listed.file = study.stories.at(s).written;
         for (const StorySentence& sentence : story.sentences) listed.sentences.push_back(sentence.gloss);
-        for (const StoryQuestion& q : story.questions)
-            listed.questions.push_back({q.text, q.choices, q.answer, q.probeVerb, q.probeSentence});
+        for (std::size_t q = 0; q < story.questions.size(); ++q) {
+            const StoryQuestion& question = story.questions[q];
+            ListedQuestion item{question.text, question.choices, question.answer, question.probeVerb, question.probeSentence, {}, {}};
+            // Issue 24: a question with gloss has its clip when the study shows questions signed.
+            if (showsSigned(study.questionsShown) && !question.gloss.empty()) {
+                item.gloss = question.gloss;
+                item.clip = clip(questionClipName(s, q));
+            }
+            listed.questions.push_back(std::move(item));
+        }
         for (VerbVersion v : study.versions) listed.clips.push_back(clip(storyClipName(s, v)));
         for (const HumanVersion* h : humans)
             if (!h->phase1Clips.empty()) listed.clips.push_back(clip(storyId(s) + "_version-" + h->name));
         listing.stories.push_back(std::move(listed));
+    }
+    for (const StudyInstruction& page : study.instructions) {
+        ListedInstruction listed{page.page, page.text, page.gloss, {}};
+        if (showsSigned(study.instructionsShown)) listed.clip = clip(instructionClipName(page.page));
+        listing.instructions.push_back(std::move(listed));
     }
     StudyDesignSpec spec = study.designSpec();
     if (phase2) {
@@ -436,10 +469,18 @@ std::string designText(const StudyListing& listing) {
             text += "  ? " + q.text + " |";
             for (const std::string& choice : q.choices) text += " " + choice + " |";
             text += " answer " + std::to_string(q.answer) + " probe " + q.probeVerb + " " + std::to_string(q.probeSentence) + "\n";
+            // Issue 24: the question as signed, when it is (a study in English keeps its design).
+            if (!q.clip.video.empty()) text += "  ?asl " + q.gloss + "\n";
         }
     }
     for (const ListedSentence& sentence : listing.sentences)
         text += sentence.id + " " + sentence.panelCode + " " + sentence.gloss + "\n";
+    for (const ListedInstruction& page : listing.instructions)
+        if (!page.clip.video.empty()) {
+            text += "instructions " + page.page + ":";
+            for (const std::string& gloss : page.gloss) text += " " + gloss + " |";
+            text += "\n";
+        }
     for (const ListedParticipant& p : listing.participants) {
         text += p.id + " group " + std::to_string(p.group) + ":";
         for (const ListedPhase1Trial& t : p.phase1)

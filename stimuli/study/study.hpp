@@ -5,6 +5,7 @@
 // stimuli/story/story.hpp, the schedules come from stimuli/study/study_design.hpp, and planStudy() turns
 // all of it into the listing the exports and the review page are written from.
 #include "stimuli/study/human_versions.hpp"
+#include "stimuli/study/question_clips.hpp"
 #include "stimuli/study/study_design.hpp"
 #include "stimuli/study/study_listing.hpp"
 #include "stimuli/story/timing.hpp"
@@ -84,6 +85,13 @@ struct StudyFile {
     // questions asked before part 1, by id (kBackgroundQuestions), in the study's order.
     std::string ratingPrompt = std::string(kDefaultRatingPrompt);
     std::vector<std::string> background = {kBackgroundQuestions.begin(), kBackgroundQuestions.end()};
+    // Issue 24 (question_clips.hpp): "session": {"questions": "asl"|"english"|"both",
+    // "instructions": {"show": ..., "welcome": {...}, "part2": {...}}}. The pages the study file
+    // gives; the runner adds the others from SCENES/studies/instructions.json.
+    std::string questionsShown = "both";
+    std::string instructionsShown = "both";
+    std::vector<StudyInstruction> instructions;
+    int sessionLine = 0;
     std::string experiment;                     // outputs.experiment: "jspsych" (docs/experiment.md), "none", or "" (not said)
     int participantsLine = 0, storiesLine = 0, versionsLine = 0;
 

@@ -67,6 +67,20 @@ std::string participantsIndex(const StudyListing& listing) {
     // The session's wording and background questions (study file "session", docs/experiment.md).
     study["rating_prompt"] = listing.ratingPrompt;
     study["background"] = listing.background;
+    // Issue 24: questions and instructions in ASL ("asl", "english" or "both"); each
+    // instruction page's English text and signed clip (docs/experiment.md).
+    study["questions"] = listing.questionsShown;
+    nlohmann::json instructions = nlohmann::json::object();
+    instructions["show"] = listing.instructionsShown;
+    nlohmann::json pages = nlohmann::json::object();
+    for (const ListedInstruction& page : listing.instructions) {
+        nlohmann::json entry = nlohmann::json::object();
+        entry["text"] = page.text;
+        if (!page.clip.video.empty()) entry["video"] = page.clip.video;
+        pages[page.page] = std::move(entry);
+    }
+    instructions["pages"] = std::move(pages);
+    study["instructions"] = std::move(instructions);
     return scriptSetting("signstim: this study's participants, for experiment/index.html (docs/experiment.md).",
                          "signstimStudy", study.dump(2, ' ', false));
 }

@@ -481,6 +481,12 @@ std::string jspsychTimelineVariables(const StudyListing& listing, std::size_t pa
             entry["correct"] = answer;
             entry["correct_letter"] = choiceLetter(answer);
             entry["correct_text"] = question.choices[answer];
+            // Issue 24: the question signed (played before the choices when the study shows it).
+            if (!question.clip.video.empty()) {
+                entry["gloss"] = question.gloss;
+                entry["video"] = json::array({question.clip.video});
+                entry["duration_s"] = durationValue(question.clip.durationSeconds);
+            }
             questions.push_back(std::move(entry));
         }
         json element = json::object();

@@ -21,6 +21,10 @@ std::vector<StudyUnit> studyUnits(const StudyListing& listing) {
     std::vector<StudyUnit> units;
     for (std::size_t i = 0; i < listing.stories.size(); ++i) units.push_back({listing.stories[i].id, true, i});
     for (std::size_t i = 0; i < listing.sentences.size(); ++i) units.push_back({listing.sentences[i].id, false, i});
+    // Issue 24: signed questions (one unit per story that has them) and instructions.
+    for (std::size_t i = 0; i < listing.stories.size(); ++i)
+        if (hasQuestionClips(listing.stories[i])) units.push_back({questionsUnitId(i), false, i, StudyUnitKind::Questions});
+    if (hasInstructionClips(listing)) units.push_back({kInstructionsUnitId, false, 0, StudyUnitKind::Instructions});
     std::sort(units.begin(), units.end(), [](const StudyUnit& a, const StudyUnit& b) { return a.id < b.id; });
     return units;
 }
@@ -74,7 +78,16 @@ std::string unitInputHash(const std::string& dataHash, const StudyUnit& unit, co
                           const StudyListing& listing) {
     Sha256 hash;
     hash.update(dataHash + "\n" + unit.id + "\n");
-    if (unit.story) {
+    if (unit.kind == StudyUnitKind::Questions) {
+        // The story file (its characters, where they stand, the questions' gloss) and the clips.
+        hash.update(readTextFile(study.stories[unit.index].path));
+        for (const ListedQuestion& q : listing.stories[unit.index].questions) hash.update(q.gloss + " " + q.clip.video + "\n");
+    } else if (unit.kind == StudyUnitKind::Instructions) {
+        for (const ListedInstruction& page : listing.instructions) {
+            hash.update(page.page + " " + page.clip.video + "\n");
+            for (const std::string& gloss : page.gloss) hash.update(gloss + "\n");
+        }
+    } else if (unit.story) {
         hash.update(readTextFile(study.stories[unit.index].path));
         for (const ListedClip& c : listing.stories[unit.index].clips)
             hash.update(c.video + "\n" + c.regions + "\n" + c.annotation + "\n");
@@ -232,6 +245,11 @@ StudyListing completedListing(const fs::path& dir, StudyListing listing, const s
     for (ListedStory& story : listing.stories)
         for (ListedClip& clip : story.clips) fill(clip);
     for (ListedSentence& sentence : listing.sentences) fill(sentence.clip);
+    for (ListedStory& story : listing.stories)
+        for (ListedQuestion& question : story.questions)
+            if (!question.clip.video.empty()) fill(question.clip);
+    for (ListedInstruction& page : listing.instructions)
+        if (!page.clip.video.empty()) fill(page.clip);
     return listing;
 }
 

@@ -39,10 +39,14 @@ inline constexpr const char* kStudyReviewPage = "index.html";
 
 // ---- units and shards ------------------------------------------------------------------------
 
+// Issue 24: a unit of signed questions or instructions (question_clips.hpp) besides the stimuli.
+enum class StudyUnitKind { Stimulus, Questions, Instructions };
+
 struct StudyUnit {
     std::string id;         // "likert-03", "story-07": sorted, the order shards are dealt from
-    bool story = true;      // a phase-1 story, else a phase-2 sentence
-    std::size_t index = 0;  // into listing.stories or listing.sentences
+    bool story = true;      // a phase-1 story, else a phase-2 sentence (kind Stimulus)
+    std::size_t index = 0;  // into listing.stories or listing.sentences (Questions: the story)
+    StudyUnitKind kind = StudyUnitKind::Stimulus;  // Questions, Instructions: `story` is false
 };
 
 // Every unit of the listing, sorted by id.

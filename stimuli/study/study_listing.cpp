@@ -110,9 +110,14 @@ json listingToJson(const StudyListing& listing) {
     json stories = json::array();
     for (const ListedStory& s : listing.stories) {
         json questions = json::array();
-        for (const ListedQuestion& q : s.questions)
-            questions.push_back({{"text", q.text}, {"choices", q.choices}, {"answer", q.answer},
-                                 {"probeVerb", q.probeVerb}, {"probeSentence", q.probeSentence}});
+        for (const ListedQuestion& q : s.questions) {
+            json question = {{"text", q.text}, {"choices", q.choices}, {"answer", q.answer},
+                             {"probeVerb", q.probeVerb}, {"probeSentence", q.probeSentence}};
+            // Issue 24: only when there is one, so listings without ASL questions read as before.
+            if (!q.gloss.empty()) question["gloss"] = q.gloss;
+            if (!q.clip.video.empty()) question["clip"] = clipToJson(q.clip);
+            questions.push_back(std::move(question));
+        }
         json clips = json::array();
         for (const ListedClip& c : s.clips) clips.push_back(clipToJson(c));
         stories.push_back({{"id", s.id}, {"title", s.title}, {"file", s.file}, {"sentences", s.sentences},
@@ -135,6 +140,16 @@ json listingToJson(const StudyListing& listing) {
     }
     j["participants"] = participants;
     if (!listing.draftAnimator.empty()) j["draftAnimator"] = listing.draftAnimator;  // issue 22: only when there are some
+    // Issue 24: questions and instructions in ASL.
+    j["questionsShown"] = listing.questionsShown;
+    j["instructionsShown"] = listing.instructionsShown;
+    json instructions = json::array();
+    for (const ListedInstruction& page : listing.instructions) {
+        json entry = {{"page", page.page}, {"text", page.text}, {"gloss", page.gloss}};
+        if (!page.clip.video.empty()) entry["clip"] = clipToJson(page.clip);
+        instructions.push_back(std::move(entry));
+    }
+    j["instructions"] = instructions;
     return j;
 }
 
@@ -176,6 +191,8 @@ StudyListing listingFromJson(const json& j, const std::string& file) {
             question.answer = static_cast<int>(r.index(questions[q], "answer", wq, question.choices.size()));
             question.probeVerb = r.text(questions[q], "probeVerb", wq);
             question.probeSentence = static_cast<int>(r.index(questions[q], "probeSentence", wq, s.sentences.size()));
+            if (questions[q].contains("gloss")) question.gloss = r.text(questions[q], "gloss", wq);
+            if (questions[q].contains("clip")) question.clip = r.clip(questions[q]["clip"], wq + "/clip");
             s.questions.push_back(std::move(question));
         }
         const json& clips = r.list(stories[i], "clips", w);
@@ -230,6 +247,21 @@ StudyListing listingFromJson(const json& j, const std::string& file) {
         listing.participants.push_back(std::move(p));
     }
     if (j.contains("draftAnimator")) listing.draftAnimator = r.texts(j, "draftAnimator", "");  // issue 22
+    // Issue 24; a listing written before it: English only, no instruction pages.
+    if (j.contains("questionsShown")) listing.questionsShown = r.text(j, "questionsShown", "");
+    if (j.contains("instructionsShown")) listing.instructionsShown = r.text(j, "instructionsShown", "");
+    if (j.contains("instructions")) {
+        const json& pages = r.list(j, "instructions", "");
+        for (std::size_t i = 0; i < pages.size(); ++i) {
+            const std::string w = "/instructions/" + std::to_string(i);
+            ListedInstruction page;
+            page.page = r.text(pages[i], "page", w);
+            page.text = r.text(pages[i], "text", w);
+            page.gloss = r.texts(pages[i], "gloss", w);
+            if (pages[i].contains("clip")) page.clip = r.clip(pages[i]["clip"], w + "/clip");
+            listing.instructions.push_back(std::move(page));
+        }
+    }
     return listing;
 }
 

@@ -35,6 +35,19 @@ struct ListedQuestion {
     int answer = 0;                    // 0-based index into choices
     std::string probeVerb;             // "ASK": the verb the question asks about
     int probeSentence = 0;             // 0-based sentence index within the story
+    // Issue 24: the question in gloss and its signed clip (stimuli/study/question_clips.hpp);
+    // empty when the story gives no gloss or the study shows the questions in English only.
+    std::string gloss{};
+    ListedClip clip{};
+};
+
+// Issue 24: an instruction page of the experiment ("welcome", "part2"), its English text, its
+// gloss and the signed clip (empty when the study shows instructions in English only).
+struct ListedInstruction {
+    std::string page;
+    std::string text;
+    std::vector<std::string> gloss;
+    ListedClip clip;
 };
 
 struct ListedStory {
@@ -95,6 +108,12 @@ struct StudyListing {
     // questions asked before part 1, by id ("hearing", "aslAge", "aslSchool", "dailyUse").
     std::string ratingPrompt;
     std::vector<std::string> background;
+    // Issue 24: what the participant is shown of the questions and the instructions: "asl",
+    // "english" or "both" (question_clips.hpp); a listing written before the choice existed
+    // reads as "english" (no clips). The instruction pages (welcome, part 2).
+    std::string questionsShown = "english";
+    std::string instructionsShown = "english";
+    std::vector<ListedInstruction> instructions;
     // Render settings, for the page and the sheets: "1280x720", 30 fps, MSAA 4.
     std::string size;
     std::string fps;

@@ -131,7 +131,7 @@ TEST(StudyCli, RendersPlayableClipsResumesAndVerifyCatchesAChangedByte) {
     const fs::path& dir = referenceRun();
     const nlohmann::json manifest = nlohmann::json::parse(readFile(dir / "manifest.json"));
     EXPECT_EQ(manifest["seed"], 7);
-    EXPECT_EQ(manifest["units"].size(), 8u);
+    EXPECT_EQ(manifest["units"].size(), 13u);  // 4 stories, 4 sentences, 4 of signed questions, the instructions (issue 24)
     std::set<std::string> kinds;
     int videos = 0;
     for (const auto& f : manifest["files"]) {
@@ -147,7 +147,11 @@ TEST(StudyCli, RendersPlayableClipsResumesAndVerifyCatchesAChangedByte) {
         const std::string expected = "h264,96,72,yuv420p,4/1," + std::to_string(f["frames"].get<int>());
         EXPECT_EQ(probe.output.substr(0, probe.output.find('\n')), expected) << f["path"];
     }
-    EXPECT_EQ(videos, 4 * 4 + 4);
+    // Stories x versions, sentences, and (issue 24) the 16 questions and 2 instruction pages
+    // signed, one clip each whatever the version.
+    EXPECT_EQ(videos, 4 * 4 + 4 + 4 * 4 + 2);
+    EXPECT_TRUE(fs::exists(dir / "clips" / "story-02_question-3.mp4"));
+    EXPECT_TRUE(fs::exists(dir / "clips" / "instructions-welcome.mp4"));
     EXPECT_TRUE(kinds.count("poster"));
     // Names as SPEC §5.
     EXPECT_TRUE(fs::exists(dir / "clips" / "story-03_version-point.mp4"));
@@ -161,7 +165,7 @@ TEST(StudyCli, RendersPlayableClipsResumesAndVerifyCatchesAChangedByte) {
     fs::copy(dir, copy, fs::copy_options::recursive);
     const auto again = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(copy.string())));
     ASSERT_EQ(again.status, 0) << again.output;
-    EXPECT_NE(again.output.find("0 of 8 units rendered, 8 already complete"), std::string::npos) << again.output;
+    EXPECT_NE(again.output.find("0 of 13 units rendered, 13 already complete"), std::string::npos) << again.output;
     EXPECT_EQ(readFile(copy / "manifest.json"), readFile(dir / "manifest.json"));
 
     const auto verified = runSignstim("study verify " + shellQuote(copy.string()));
@@ -179,7 +183,7 @@ TEST(StudyCli, RendersPlayableClipsResumesAndVerifyCatchesAChangedByte) {
     // found as a missing clip is. Until it has, the folder has no manifest.
     const auto repaired = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(copy.string())));
     ASSERT_EQ(repaired.status, 0) << repaired.output;
-    EXPECT_NE(repaired.output.find("1 of 8 units rendered, 7 already complete"), std::string::npos) << repaired.output;
+    EXPECT_NE(repaired.output.find("1 of 13 units rendered, 12 already complete"), std::string::npos) << repaired.output;
     EXPECT_EQ(readFile(copy / "manifest.json"), readFile(dir / "manifest.json"));
 }
 
@@ -309,7 +313,7 @@ TEST(StudyCli, ExperimentIsWrittenWithTheStudyIntoTheManifestAndKeptByLaterRuns)
     // On a complete study nothing is rendered: the documents are written again, with the experiment.
     const auto r = runSignstim(base + " --experiment jspsych", Capture::StdoutAndStderr, environment);
     ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find("0 of 8 units rendered"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("0 of 13 units rendered"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("experiment/index.html?participant=P01"), std::string::npos) << r.output;
 
     for (const signstim::stimuli::ExperimentLibraryFile& file : signstim::stimuli::jspsychLibraryFiles())

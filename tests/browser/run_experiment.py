@@ -57,7 +57,7 @@ sys.dont_write_bytecode = True  # importing the modules beside it leaves no __py
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from chromium_session import (INSTALL_HINT, SKIP, chromium_options, find_prerequisites,  # noqa: E402
                               kill_tree, start_failure)
-from experiment_results import BACKGROUND_COLUMN, Expected, check_results, mutations, read_conditions  # noqa: E402
+from experiment_results import BACKGROUND_COLUMN, LETTERS, Expected, check_results, mutations, read_conditions  # noqa: E402
 
 MIN_LABEL_PX = 16  # issue 24 §6: the rating page's labels were 12 px
 
@@ -78,6 +78,14 @@ if (questions) return {page: 'questions', seen: mark(questions),
   prompts: Array.from(document.querySelectorAll('.jspsych-survey-multi-choice-question'), (e) => ({
     name: e.dataset.name, prompt: e.querySelector('p.jspsych-survey-multi-choice-text').innerText.trim(),
     options: Array.from(e.querySelectorAll('input[type=radio]'), (i) => i.value)}))};
+const choices = q('#signstim-question-choices');
+if (choices) { const v = q('#signstim-question-video'); const next = q('#jspsych-survey-html-form-next');
+  const text = q('.signstim-question-text');
+  return {page: 'asl-question', seen: mark(q('#jspsych-survey-html-form')), hasVideo: !!v,
+    controls: v ? v.controls : null, readyState: v ? v.readyState : 0, src: v ? v.currentSrc : '',
+    ended: v ? v.ended : false, choicesHidden: choices.hidden, nextDisabled: next ? next.disabled : null,
+    prompt: text ? text.innerText.trim() : null,
+    options: Array.from(choices.querySelectorAll('label'), (l) => l.innerText.trim())}; }
 const background = q('fieldset.signstim-background');
 if (background) return {page: 'background', seen: mark(q('#jspsych-survey-html-form')),
   questions: Array.from(document.querySelectorAll('fieldset.signstim-background'), (f) => ({
@@ -91,7 +99,8 @@ if (ratings) { const v = q('#signstim-rating-video'); const next = q('#jspsych-s
     panels: Array.from(document.querySelectorAll('table.signstim-ratings tbody th'), (e) => e.innerText.trim()),
     values: Array.from(document.querySelectorAll('table.signstim-ratings thead th'), (e) => e.innerText.trim())}; }
 const buttons = q('#jspsych-html-button-response-btngroup');
-if (buttons) return {page: 'text', seen: mark(buttons), text: q('#jspsych-html-button-response-stimulus').innerText};
+if (buttons) return {page: 'text', seen: mark(buttons), text: q('#jspsych-html-button-response-stimulus').innerText,
+  instructionVideo: !!q('#signstim-instruction-video')};
 if (q('#jspsych-loading-progress-bar-container')) return {page: 'loading'};
 const start = q('#signstim-start');
 if (start) return {page: 'start', text: start.innerText};
@@ -187,6 +196,7 @@ class Session:
         path.write_bytes(base64.b64decode(shot["data"]))
 
     def run(self, url, person, expected, downloads, over_http):
+        self.pending = []  # issue 24: the answers given so far to the current story's signed questions
         vars_ = expected.timeline
         phase1, phase2 = vars_["phase1"], vars_["phase2"]
         story_index = 0
@@ -209,6 +219,7 @@ class Session:
                 raise Failure(f"{expected.participant}: the page shows the participant list instead of a session: "
                               f"{state['text'][:200]!r}")
             if page == "text":
+                self.instruction_clip(state, texts, story_index == len(phase1) and texts > 0, expected)
                 self.screenshot(["welcome.png", "phase1-ready.png"][texts] if texts < 2 else
                                 "phase2-intro.png" if story_index == len(phase1) else "phase1-ready.png")
                 self.driver.execute_script(MARK_JS, self.element("#jspsych-html-button-response-btngroup"))
@@ -219,6 +230,9 @@ class Session:
             elif page == "questions":
                 self.questions(state, phase1, story_index, person, expected)
                 story_index += 1
+            elif page == "asl-question":
+                if self.asl_question(state, phase1, story_index, person, expected, over_http):
+                    story_index += 1
             elif page == "background":
                 self.background(state, person, expected)
             elif page == "ratings":
@@ -270,6 +284,8 @@ class Session:
     def questions(self, state, phase1, index, person, expected):
         who = f"{expected.participant} story {index + 1} questions"
         trial = phase1[index]
+        if self.study_setting("questions") in ("asl", "both") and any("video" in q for q in trial["questions"]):
+            raise Failure(f"{who}: the questions are shown in English only; the study asks them in ASL")
         questions = trial["questions"]
         shown = state["prompts"]
         if len(shown) != len(questions):
@@ -287,6 +303,74 @@ class Session:
         self.screenshot("phase1-questions.png")
         self.driver.execute_script(MARK_JS, self.element("#jspsych-survey-multi-choice_form"))
         self.element("#jspsych-survey-multi-choice-next").click()
+
+    def study_setting(self, name):
+        return self.driver.execute_script(f"return (window.signstimStudy || {{}})[{json.dumps(name)}]")
+
+    def instruction_clip(self, state, texts, part2, expected):
+        """Issue 24: the welcome and part-2 pages play their instruction clip when the study signs them."""
+        instructions = self.study_setting("instructions") or {}
+        page = "welcome" if texts == 0 else "part2" if part2 else None
+        signed = instructions.get("show") in ("asl", "both")
+        if page and (instructions.get("pages") or {}).get(page, {}).get("video") and signed:
+            if not state.get("instructionVideo"):
+                raise Failure(f"{expected.participant}: the {page} page has no instruction clip; the study signs its "
+                              "instructions")
+        elif state.get("instructionVideo") and page is None:
+            raise Failure(f"{expected.participant}: an instruction clip on a page that has none")
+
+    def asl_question(self, state, phase1, index, person, expected, over_http):
+        """Issue 24: one signed question: its clip plays before the choices appear. True after the story's last."""
+        q = len(self.pending)
+        who = f"{expected.participant} story {index + 1} question {q + 1} (ASL)"
+        if index >= len(phase1):
+            raise Failure(f"{who}: more stories than the schedule's {len(phase1)}")
+        questions = phase1[index]["questions"]
+        if q >= len(questions):
+            raise Failure(f"{who}: more question pages than the story's {len(questions)} questions")
+        question = questions[q]
+        shown = self.study_setting("questions")
+        if "video" in question:
+            if not state["hasVideo"] or state["controls"] is not True:
+                raise Failure(f"{who}: the question's clip is missing or has no controls (replay allowed)")
+            if not state["ended"] and (not state["choicesHidden"] or state["nextDisabled"] is not True):
+                raise Failure(f"{who}: the choices or Continue are available before the question clip has ended")
+        expected_prompt = unescape(question["prompt"]) if shown in ("both", "english") else None
+        if state["prompt"] != expected_prompt:
+            raise Failure(f"{who}: the English question reads {state['prompt']!r}, expected {expected_prompt!r} "
+                          f"(questions shown: {shown})")
+        want = [f"{LETTERS[i]} {unescape(o)}" for i, o in enumerate(question["options"])]
+        if state["options"] != want:
+            raise Failure(f"{who}: choices {state['options']}, expected {want}")
+        if "video" in question:
+            video = self.element("#signstim-question-video")
+            end = time.monotonic() + 20
+            while (state := self.state()).get("readyState", 0) < 1:
+                if time.monotonic() > end:
+                    raise Failure(f"{who}: the question clip's metadata did not load within 20 s")
+                time.sleep(0.05)
+            self.check_source(who, state["src"], question["video"][0], over_http)
+            self.screenshot("phase1-asl-question-playing.png")
+            self.driver.execute_script(SEEK_END_JS, video)  # the test skips the watching
+            end = time.monotonic() + 20
+            while (state := self.state()).get("choicesHidden") or state.get("nextDisabled"):
+                if time.monotonic() > end:
+                    raise Failure(f"{who}: the choices did not appear 20 s after the clip was sought to its end")
+                time.sleep(0.05)
+        pick = answer_plan(person, index, q, question["correct"], len(question["options"]))
+        self.element(f"#signstim-choice-{pick}").click()
+        self.pending.append(pick)
+        self.screenshot("phase1-asl-question.png")
+        if self.screenshots and "phase1-asl-question-window.png" not in self.shots:
+            self.shots.add("phase1-asl-question-window.png")
+            self.driver.get_screenshot_as_file(str(pathlib.Path(self.screenshots) / "phase1-asl-question-window.png"))
+        self.driver.execute_script(MARK_JS, self.element("#jspsych-survey-html-form"))
+        self.element("#jspsych-survey-html-form-next").click()
+        if len(self.pending) < len(questions):
+            return False
+        expected.answers.append(self.pending)
+        self.pending = []
+        return True
 
     def background(self, state, person, expected):
         who = f"{expected.participant} background"

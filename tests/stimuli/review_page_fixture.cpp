@@ -69,6 +69,11 @@ StudyListing reviewFixtureListing(const ReviewFixtureShape& shape) {
             question.answer = static_cast<int>((s + q) % 3);
             question.probeVerb = verb;
             question.probeSentence = static_cast<int>(q % 3);
+            if (shape.signedQuestions) {
+                question.gloss = std::string(a) + " " + verb + " WHO";
+                question.clip = clip(story.id + "_question-" + std::to_string(q + 1), reviewFixtureSignedSeconds,
+                                     shape.withFrameFolders);
+            }
             story.questions.push_back(question);
         }
         for (std::size_t v = 0; v < listing.versions.size(); ++v)
@@ -99,6 +104,15 @@ StudyListing reviewFixtureListing(const ReviewFixtureShape& shape) {
     // The experiment's session settings, as a study file without "session" gives them.
     listing.ratingPrompt = std::string(kDefaultRatingPrompt);
     listing.background.assign(kBackgroundQuestions.begin(), kBackgroundQuestions.end());
+    if (shape.signedQuestions) {
+        listing.questionsShown = "both";
+        listing.instructionsShown = "both";
+        for (const char* page : {"welcome", "part2"})
+            listing.instructions.push_back({page, std::string("The ") + page + " page's instructions <in English> & more.",
+                                            {"THANK-YOU HELP", "WATCH STORY"},
+                                            clip(std::string("instructions-") + page, reviewFixtureSignedSeconds,
+                                                 shape.withFrameFolders)});
+    }
 
     // The design's Latin square, as planStudy fills it (stimuli/study/study.cpp).
     listing.groupVersion.assign(shape.stories, {});

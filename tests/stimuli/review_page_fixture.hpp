@@ -14,7 +14,11 @@ struct ReviewFixtureShape {
     std::size_t participants = 24;
     std::size_t likertSentences = 8;
     bool withFrameFolders = false;  // fill ListedClip::frames
+    // Issue 24: questions and instructions in ASL ("both"): every question with gloss and a
+    // clip (story-NN_question-Q, lasting reviewFixtureSignedSeconds), instruction pages with clips.
+    bool signedQuestions = false;
 };
+inline constexpr double reviewFixtureSignedSeconds = 1.4;
 
 // Four versions (point, vector, animator, uninflected). Story clips of version v last
 // reviewFixtureSeconds(v) at 15 fps; side-by-side clips last 2 s. Titles, glosses and questions

@@ -60,6 +60,7 @@ struct Options {
     bool fullPage = false;
     bool experiment = false;
     bool documentsOnly = false;
+    bool aslQuestions = false;  // issue 24: questions and instructions in ASL
     std::string screenshots;
 };
 
@@ -171,6 +172,15 @@ bool writeMedia(const StudyListing& listing, const fs::path& out) {
         for (std::size_t v = 0; v < story.clips.size(); ++v)
             place(story.clips[v], (media / ("version-" + std::to_string(v))).string());
     for (const ListedSentence& sentence : listing.sentences) place(sentence.clip, quad);
+    // Issue 24: the signed questions and instructions, as the last version's clip (its length is
+    // reviewFixtureSignedSeconds).
+    static_assert(testing::reviewFixtureSignedSeconds == 1.4, "the last version's clip lasts 1.4 s");
+    const std::string signedMedia = (media / ("version-" + std::to_string(listing.versions.size() - 1))).string();
+    for (const ListedStory& story : listing.stories)
+        for (const ListedQuestion& question : story.questions)
+            if (!question.clip.video.empty()) place(question.clip, signedMedia);
+    for (const ListedInstruction& page : listing.instructions)
+        if (!page.clip.video.empty()) place(page.clip, signedMedia);
     fs::remove_all(media);
     return true;
 }
@@ -230,6 +240,7 @@ int writeAndCheck(const Options& options) {
 
     testing::ReviewFixtureShape shape;
     shape.withFrameFolders = true;
+    shape.signedQuestions = options.aslQuestions;
     if (options.small) {
         shape.stories = 4;
         shape.participants = 4;
@@ -301,7 +312,7 @@ int writeAndCheck(const Options& options) {
 
 int usage() {
     std::cerr << "usage: signstim_review_page_fixture --out DIR [--case pass|missing-video|wrong-duration|"
-                 "broken-video|console-error] [--small] [--experiment | --documents-only]\n"
+                 "broken-video|console-error] [--small] [--asl-questions] [--experiment | --documents-only]\n"
                  "         [--python PYTHON --checker check_review_page.py [--screenshot FILE.png [--full-page]]]\n"
                  "         [--experiment --python PYTHON --checker run_experiment.py [--screenshots DIR]]\n";
     return 2;
@@ -319,6 +330,7 @@ int main(int argc, char** argv) {
         else if (arg == "--full-page") options.fullPage = true;
         else if (arg == "--experiment") options.experiment = true;
         else if (arg == "--documents-only") options.documentsOnly = true;
+        else if (arg == "--asl-questions") options.aslQuestions = true;
         else if (arg == "--screenshots" && (v = value())) options.screenshots = v;
         else if (arg == "--out" && (v = value())) options.out = v;
         else if (arg == "--case" && (v = value())) options.testCase = v;

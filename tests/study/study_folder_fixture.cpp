@@ -14,10 +14,12 @@ namespace signstim::stimuli::testing {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-FolderFixture folderFixture(const std::string& salt) {
+FolderFixture folderFixture(const std::string& salt, bool signedQuestions) {
     FolderFixture f;
     f.salt = salt;
-    f.listing = reviewFixtureListing({.stories = 4, .participants = 4, .likertSentences = 4});
+    ReviewFixtureShape shape{.stories = 4, .participants = 4, .likertSentences = 4};
+    shape.signedQuestions = signedQuestions;
+    f.listing = reviewFixtureListing(shape);
     // The review fixture leaves the design's table out; the plan's reader wants it (a Latin square).
     f.listing.groupVersion.assign(f.listing.stories.size(), {});
     for (std::size_t s = 0; s < f.listing.stories.size(); ++s)
@@ -45,10 +47,17 @@ void writePlan(const fs::path& dir, const FolderFixture& study) {
 
 void writeUnit(const fs::path& dir, const FolderFixture& study, const StudyUnit& unit) {
     std::vector<ListedClip> clips;
-    if (unit.story)
+    if (unit.kind == StudyUnitKind::Questions) {
+        for (const ListedQuestion& q : study.listing.stories[unit.index].questions)
+            if (!q.clip.video.empty()) clips.push_back(q.clip);
+    } else if (unit.kind == StudyUnitKind::Instructions) {
+        for (const ListedInstruction& page : study.listing.instructions)
+            if (!page.clip.video.empty()) clips.push_back(page.clip);
+    } else if (unit.story) {
         clips = study.listing.stories[unit.index].clips;
-    else
+    } else {
         clips.push_back(study.listing.sentences[unit.index].clip);
+    }
     json files = json::array();
     for (const ListedClip& clip : clips) {
         fs::create_directories((dir / clip.video).parent_path());

@@ -20,7 +20,8 @@ struct FolderFixture {
 
 // Four stories, four participants, four side-by-side sentences; every unit's input hash is
 // "inputs-" + its id + `salt`.
-FolderFixture folderFixture(const std::string& salt = "");
+// `signedQuestions` (issue 24): the questions and instructions in ASL, with their units.
+FolderFixture folderFixture(const std::string& salt = "", bool signedQuestions = false);
 // A fresh, empty folder under the system's temporary folder, named for the test.
 std::filesystem::path freshFolder(const std::string& name);
 // Writes the plan into DIR (as a run does before its first unit).

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 namespace signstim::stimuli::testing {
@@ -113,6 +114,62 @@ TEST(StudyFolder, MergeJoinsShardFoldersIntoOneVerifiedStudy) {
     EXPECT_TRUE(intoA.state.complete);
     EXPECT_EQ(intoA.copied, shardUnits(study.units, 1, 2).size());
     EXPECT_EQ(readBytes(a / kStudyManifestFile), readBytes(target / kStudyManifestFile));
+}
+
+// Issue 24: the signed question and instruction clips are units like the stories: a folder is
+// complete only with them, a changed byte in one is found by verify and re-renders its unit, and
+// shards merge to the same manifest as one run.
+TEST(StudyFolder, SignedQuestionUnitsResumeShardMergeAndVerifyLikeStories) {
+    const FolderFixture study = folderFixture("", true);
+    ASSERT_EQ(study.units.size(), 8u + 4u + 1u);  // stories, sentences, questions-01..04, instructions
+    const StudyUnit& questions = *std::find_if(study.units.begin(), study.units.end(),
+                                               [](const StudyUnit& u) { return u.id == "questions-02"; });
+    EXPECT_EQ(questions.kind, StudyUnitKind::Questions);
+
+    const fs::path whole = freshFolder("signed-whole");
+    writePlan(whole, study);
+    for (const StudyUnit& u : study.units)
+        if (u.kind != StudyUnitKind::Instructions) writeUnit(whole, study, u);
+    StudyFolderState state = finishStudyFolder(whole, study.plan, nullptr);
+    EXPECT_FALSE(state.complete);
+    EXPECT_EQ(state.missing, std::vector<std::string>{"instructions"});
+    writeUnit(whole, study, study.units[std::size_t(std::find_if(study.units.begin(), study.units.end(), [](const StudyUnit& u) {
+                                                     return u.kind == StudyUnitKind::Instructions;
+                                                 }) - study.units.begin())]);
+    state = finishStudyFolder(whole, study.plan, nullptr);
+    ASSERT_TRUE(state.complete);
+    EXPECT_TRUE(verifyStudyFolder(whole).problems.empty());
+    // The manifest lists each question clip once, with its duration filled into the listing.
+    const json manifest = json::parse(readBytes(whole / kStudyManifestFile));
+    const std::string clip = study.listing.stories[1].questions[0].clip.video;
+    EXPECT_EQ(std::count_if(manifest["files"].begin(), manifest["files"].end(),
+                            [&](const json& f) { return f["path"] == clip; }),
+              1);
+    EXPECT_EQ(manifest["study"]["stories"][1]["questions"][0]["clip"]["video"], clip);
+
+    // A changed byte of a question clip: verify names it, and its unit is incomplete again.
+    std::string bytes = readBytes(whole / clip);
+    bytes[0] = bytes[0] == 'X' ? 'Y' : 'X';
+    writeBytes(whole / clip, bytes);
+    const StudyVerification verified = verifyStudyFolder(whole);
+    ASSERT_FALSE(verified.problems.empty());
+    EXPECT_NE(verified.problems.front().find(clip), std::string::npos) << verified.problems.front();
+    EXPECT_FALSE(unitComplete(whole, "questions-02", "inputs-questions-02"));
+    EXPECT_TRUE(unitComplete(whole, "questions-01", "inputs-questions-01"));
+
+    // Three shards merged: the same manifest as one run.
+    const fs::path fresh = freshFolder("signed-one");
+    writeAllUnits(fresh, study);
+    ASSERT_TRUE(finishStudyFolder(fresh, study.plan, nullptr).complete);
+    std::vector<fs::path> shards;
+    for (std::size_t i = 0; i < 3; ++i) {
+        shards.push_back(freshFolder("signed-shard-" + std::to_string(i)));
+        writePlan(shards.back(), study);
+        for (const StudyUnit& u : shardUnits(study.units, i, 3)) writeUnit(shards.back(), study, u);
+    }
+    const fs::path merged = freshFolder("signed-merged");
+    ASSERT_TRUE(mergeStudyFolders(shards, merged).state.complete);
+    EXPECT_EQ(readBytes(merged / kStudyManifestFile), readBytes(fresh / kStudyManifestFile));
 }
 
 TEST(StudyFolder, MergeRefusesFoldersOfAnotherStudyOrSettings) {

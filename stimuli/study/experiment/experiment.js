@@ -7,7 +7,9 @@
 //   background: the study's background questions (hearing status, age of ASL acquisition,
 //            schooling, daily use; study file "session.background"), saved on every row;
 //   phase 1: each story's video plays once (no controls, no pause, no replay), then its
-//            multiple-choice questions;
+//            multiple-choice questions: on one page in English, or (issue 24, study file
+//            "session.questions": "asl" or "both") one page per question, its signed clip
+//            playing first and the choices shown when it has ended;
 //   phase 2: each side-by-side video (controls: replay allowed) with a rating of every panel,
 //            asked in the study's words (study file "session.ratingPrompt"; by default the
 //            paper's: the quality of the verb).
@@ -85,6 +87,71 @@
       name === "verb" ? verb : String(likert[name]));
   }
 
+  // Issue 24: whether the study shows the questions or instructions signed ("asl") or as text
+  // ("english"); "both" shows both. Without the choice (an older study): English only.
+  function shows(choice, what) {
+    const c = choice || "english";
+    return c === "both" || c === what;
+  }
+
+  function paragraphs(text) {
+    return String(text).split(/\n\s*\n/).map((p) => "<p class=\"signstim-instruction-text\">" + escapeHtml(p.trim()) +
+      "</p>").join("");
+  }
+
+  // An instruction page's signed clip (replay allowed) and its English text, as the study shows them.
+  function instructionHtml(name) {
+    const instructions = (window.signstimStudy || {}).instructions || {};
+    const page = (instructions.pages || {})[name];
+    if (!page) return "";
+    let html = "";
+    if (page.video && shows(instructions.show, "asl")) {
+      html += "<video id=\"signstim-instruction-video\" class=\"signstim-video signstim-instruction-video\" src=\"" +
+        escapeHtml(clipUrl(page.video)) + "\" controls autoplay playsinline preload=\"auto\" disablepictureinpicture " +
+        "controlslist=\"nodownload noremoteplayback\"></video>";
+    }
+    if (page.text && shows(instructions.show, "english")) html += paragraphs(page.text);
+    return html;
+  }
+
+  function instructionVideos() {
+    const instructions = (window.signstimStudy || {}).instructions || {};
+    if (!shows(instructions.show, "asl")) return [];
+    return Object.values(instructions.pages || {}).filter((page) => page.video).map((page) => clipUrl(page.video));
+  }
+
+  // The signed questions of a story trial, when the study shows them: their clips' URLs.
+  function signedQuestions(trial) {
+    return shows((window.signstimStudy || {}).questions, "asl") && trial.questions.some((q) => q.video);
+  }
+
+  function questionPreambleHtml(url, index, count, q, questions) {
+    return stepHtml(1, index, count, "Story") +
+      "<h1>Question " + (q + 1) + " of " + questions + "</h1>" +
+      (url ? "<video id=\"signstim-question-video\" class=\"signstim-video\" src=\"" + escapeHtml(url) + "\" " +
+        "controls autoplay playsinline preload=\"auto\" disablepictureinpicture " +
+        "controlslist=\"nodownload noremoteplayback\"></video>" : "");
+  }
+
+  // The choices, hidden until the question clip has ended (shown at once without a clip). The
+  // prompt and options arrive HTML-escaped from the timeline file.
+  function questionFormHtml(question, withText, hasVideo) {
+    let html = withText ? "<p class=\"signstim-question-text\">" + question.prompt + "</p>" : "";
+    html += "<fieldset class=\"signstim-choices\" id=\"signstim-question-choices\"" + (hasVideo ? " hidden" : "") + ">" +
+      "<legend class=\"signstim-hidden\">Choices</legend>";
+    question.options.forEach((option, i) => {
+      const id = "signstim-choice-" + i;
+      html += "<label for=\"" + id + "\"><input type=\"radio\" id=\"" + id + "\" name=\"" + question.name + "\" value=\"" +
+        i + "\" required> <span class=\"signstim-letter\">" + LETTERS[i] + "</span> " + option + "</label>";
+    });
+    html += "</fieldset>";
+    if (hasVideo) {
+      html += "<p class=\"signstim-note\" id=\"signstim-question-wait\">The choices appear when the question has been " +
+        "signed. You may replay it.</p>";
+    }
+    return html;
+  }
+
   function plural(count, one, many) {
     return count + " " + (count === 1 ? one : many);
   }
@@ -96,7 +163,7 @@
     const videos = vars.phase2.length;
     const panels = videos > 0 ? Object.keys(vars.phase2[0].panels).length : 0;
     let html =
-      "<h1>Welcome</h1>" +
+      "<h1>Welcome</h1>" + instructionHtml("welcome") +
       "<p>In this study you watch short videos of an animated signer using American Sign Language (ASL).</p>";
     html +=
       "<h2>Part 1 · " + plural(stories, "story", "stories") + "</h2>" +
@@ -131,7 +198,7 @@
 
   function phase2IntroHtml(vars) {
     const panels = Object.keys(vars.phase2[0].panels).length;
-    return "<h1>Part 2</h1>" +
+    return "<h1>Part 2</h1>" + instructionHtml("part2") +
       "<p>Each video now shows the same sentence signed " + panels + " times, side by side, in panels " +
       panelList(panels) + ". The panels play together.</p>" +
       "<p>The panels differ only in how the verb is signed. Watch the video to the end; replay it as often as " +
@@ -267,6 +334,46 @@
     };
   }
 
+  // Issue 24: a story's questions asked in ASL, one page each: the question clip plays (with
+  // controls: replay allowed), then its choices appear; in "both" the English question is shown
+  // too. The story's row is written after its last question, as one page's would be: the
+  // answers' indices, and rt_ms summed over the question pages.
+  function pushSignedQuestions(jsPsych, timeline, vars, rows, trial, index, stories) {
+    const withText = shows((window.signstimStudy || {}).questions, "english");
+    const answers = { response_index: [], rt: 0 };
+    trial.questions.forEach((question, q) => {
+      const url = question.video ? clipUrl(question.video[0]) : null;
+      timeline.push({
+        type: jsPsychSurveyHtmlForm,
+        preamble: () => questionPreambleHtml(url ? (jsPsych.pluginAPI.getVideoBuffer(url) || url) : null, index, stories,
+          q, trial.questions.length),
+        html: questionFormHtml(question, withText, url !== null),
+        button_label: "Continue",
+        on_load: () => {
+          const video = document.getElementById("signstim-question-video");
+          if (!video) return;
+          const next = document.getElementById("jspsych-survey-html-form-next");
+          next.disabled = true;
+          video.addEventListener("contextmenu", (event) => event.preventDefault());
+          video.addEventListener("ended", () => {
+            next.disabled = false;
+            document.getElementById("signstim-question-choices").hidden = false;
+            document.getElementById("signstim-question-wait").hidden = true;
+          }, { once: true });
+          watchForVideoError(jsPsych, video, url);
+        },
+        data: { signstim_page: "asl-question", story: trial.story, version: trial.version, trial: trial.trial,
+                question: q + 1 },
+        on_finish: (data) => {
+          const chosen = data.response[question.name];
+          answers.response_index[q] = chosen === undefined || chosen === "" ? -1 : Number(chosen);
+          answers.rt += data.rt;
+          if (q === trial.questions.length - 1) rows.push(phase1Row(vars, trial, answers));
+        },
+      });
+    });
+  }
+
   function buildTimeline(jsPsych, vars, rows) {
     const timeline = [];
     const stories = vars.phase1.length;
@@ -277,7 +384,10 @@
     if (location.protocol !== "file:") {
       timeline.push({
         type: jsPsychPreload,
-        video: vars.phase1.concat(vars.phase2).map((trial) => clipUrl(trial.video[0])),
+        video: vars.phase1.concat(vars.phase2).map((trial) => clipUrl(trial.video[0]))
+          .concat(vars.phase1.filter(signedQuestions).flatMap((trial) =>
+            trial.questions.filter((q) => q.video).map((q) => clipUrl(q.video[0]))))
+          .concat(instructionVideos()),
         message: "<p>Loading the videos…</p>",
         error_message: "<p>The videos could not be loaded. Please tell the experimenter.</p>",
         show_detailed_errors: true,
@@ -314,6 +424,10 @@
         on_load: () => guardStoryVideo(jsPsych, url),
         data: { signstim_page: "story", story: trial.story, version: trial.version, trial: trial.trial },
       });
+      if (signedQuestions(trial)) {
+        pushSignedQuestions(jsPsych, timeline, vars, rows, trial, index, stories);
+        return;
+      }
       timeline.push({
         type: jsPsychSurveyMultiChoice,
         preamble: stepHtml(1, index, stories, "Story") + "<h1>Questions about the story</h1>",
