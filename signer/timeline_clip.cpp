@@ -13,6 +13,8 @@ namespace {
 
 // [D] The most a detour's bump adds to the wrist's speed at its peak (see routeTransition).
 constexpr double kDetourPeakSpeedMmPerSecond = 1200.0;
+// SPEC §6.2: peak wrist speed of natural signing.
+constexpr double kWristPeakSpeedMmPerSecond = 2500.0;
 
 // [D] A glance at a referent: 1.2 m out along its direction, 12° below eye level.
 constexpr double kGazeDistanceMm = 1200.0;
@@ -201,7 +203,28 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     // The hands along the transition with `bumps`: every frame's gaps, or (bounded) the
     // largest shortfall, given up on as soon as it exceeds `bound`.
     float handsNeeded = 0.0f, rightBodyNeeded = 0.0f, leftBodyNeeded = 0.0f;
+    // The wrists' peak speed along the transition with `bumps`, on the routing grid.
+    const auto peakSpeed = [&](const std::vector<Bump>& bumps) {
+        double peak = 0.0, before = startSeconds;
+        glm::vec3 right = from.rightWrist->wristMm, left = from.leftWrist->wristMm;
+        for (std::size_t j = 0; j < times.size(); ++j) {
+            const glm::vec3 r = straight[j].rightWrist->wristMm + offsetAt(bumps, j, true);
+            const glm::vec3 l = straight[j].leftWrist->wristMm + offsetAt(bumps, j, false);
+            if (times[j] > before)
+                peak = std::max({peak, glm::distance(r, right) / (times[j] - before), glm::distance(l, left) / (times[j] - before)});
+            right = r;
+            left = l;
+            before = times[j];
+        }
+        return peak;
+    };
+    // SPEC §6.2: a detour is sought first among those that keep the wrists within the peak
+    // speed of natural signing (or the straight path's own, where that is faster: the
+    // timing's to pace); only where none of them clears does the clearance win (the hands
+    // never pass through each other or the body) and the speed is left to the timing.
+    double speedAllowed = std::max(kWristPeakSpeedMmPerSecond, peakSpeed({}));
     const auto follow = [&](const std::vector<Bump>& bumps, std::vector<Gaps>* gaps, float bound) {
+        if (!bumps.empty() && peakSpeed(bumps) > speedAllowed) return std::numeric_limits<float>::infinity();
         float worst = 0.0f;
         for (std::size_t j = 0; j < times.size(); ++j) {
             SignerPosture p = straight[j];
@@ -251,36 +274,48 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     const auto largestBump = [&](int shape) {
         return static_cast<float>(kDetourPeakSpeedMmPerSecond * (endSeconds - startSeconds) / steepestSlope(shape));
     };
-    while (static_cast<int>(detour.bumps.size()) < kMostBumps && shortfall > kShortfallToleranceMm) {
-        // Every shape and way at a middle size; then every size of the three most promising.
-        struct Trial {
-            float shortfallMm;
-            int shape;
-            std::size_t way;
-        };
-        std::vector<Trial> trials;
-        for (int shape = 0; shape < static_cast<int>(kBumpShapes.size()); ++shape)
-            for (std::size_t w = 0; w < ways.size(); ++w)
-                if ((rightMoves && ways[w].first != glm::vec3(0.0f)) || (leftMoves && ways[w].second != glm::vec3(0.0f)))
-                    trials.push_back({follow(withBump(shape, ways[w], kSizesMm[2]), nullptr, shortfall), shape, w});
-        std::stable_sort(trials.begin(), trials.end(),
-                         [](const Trial& a, const Trial& b) { return a.shortfallMm < b.shortfallMm; });
-        float best = shortfall - 0.25f;  // a bump must help by a quarter millimetre
-        std::optional<Bump> chosen;
-        for (std::size_t t = 0; t < std::min<std::size_t>(3, trials.size()); ++t)
-            for (float size : kSizesMm) {
-                if (size > largestBump(trials[t].shape)) break;
-                std::vector<Bump> trial = withBump(trials[t].shape, ways[trials[t].way], size);
-                const float result = follow(trial, nullptr, best);
-                if (result < best) {
-                    best = result;
-                    chosen = trial.back();
+    const float straightShortfall = shortfall;
+    std::optional<std::pair<std::vector<Bump>, float>> withinSpeed;  // the first pass's detour
+    for (int pass = 0; pass < 2; ++pass) {
+        if (pass == 1) {
+            if (shortfall <= kShortfallToleranceMm) break;
+            withinSpeed = std::make_pair(detour.bumps, shortfall);
+            detour.bumps.clear();
+            shortfall = straightShortfall;
+            speedAllowed = std::numeric_limits<double>::infinity();
+        }
+        while (static_cast<int>(detour.bumps.size()) < kMostBumps && shortfall > kShortfallToleranceMm) {
+            // Every shape and way at a middle size; then every size of the three most promising.
+            struct Trial {
+                float shortfallMm;
+                int shape;
+                std::size_t way;
+            };
+            std::vector<Trial> trials;
+            for (int shape = 0; shape < static_cast<int>(kBumpShapes.size()); ++shape)
+                for (std::size_t w = 0; w < ways.size(); ++w)
+                    if ((rightMoves && ways[w].first != glm::vec3(0.0f)) || (leftMoves && ways[w].second != glm::vec3(0.0f)))
+                        trials.push_back({follow(withBump(shape, ways[w], kSizesMm[2]), nullptr, shortfall), shape, w});
+            std::stable_sort(trials.begin(), trials.end(),
+                             [](const Trial& a, const Trial& b) { return a.shortfallMm < b.shortfallMm; });
+            float best = shortfall - 0.25f;  // a bump must help by a quarter millimetre
+            std::optional<Bump> chosen;
+            for (std::size_t t = 0; t < std::min<std::size_t>(3, trials.size()); ++t)
+                for (float size : kSizesMm) {
+                    if (size > largestBump(trials[t].shape)) break;
+                    std::vector<Bump> trial = withBump(trials[t].shape, ways[trials[t].way], size);
+                    const float result = follow(trial, nullptr, best);
+                    if (result < best) {
+                        best = result;
+                        chosen = trial.back();
+                    }
                 }
-            }
-        if (!chosen) break;
-        detour.bumps.push_back(*chosen);
-        shortfall = best;
+            if (!chosen) break;
+            detour.bumps.push_back(*chosen);
+            shortfall = best;
+        }
     }
+    if (withinSpeed && withinSpeed->second <= shortfall) detour.bumps = withinSpeed->first;
     return detour;
 }
 
