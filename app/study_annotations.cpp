@@ -32,8 +32,11 @@ UnitAnnotations makeUnitAnnotations(const LoadedStudy& s, const signer::Signer& 
         std::vector<const signer::Clip*> panels;
         std::vector<ElanPanel> elanPanels;
         for (std::size_t k = 0; k < versions.size(); ++k) {
-            panels.push_back(clips[versions[k]]);
-            elanPanels.push_back({k < labels.size() ? labels[k] : "", &timelines[versions[k]]});
+            // A human-video version (placed after the animated ones) has no signer clip: its panel
+            // keeps its place in the grid and has no regions or tiers.
+            const bool signed_ = versions[k] < clips.size();
+            panels.push_back(signed_ ? clips[versions[k]] : nullptr);
+            elanPanels.push_back({k < labels.size() ? labels[k] : "", signed_ ? &timelines[versions[k]] : nullptr});
         }
         // The grid renderClips draws the panels in (app/study_units.cpp).
         const auto columns = static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(panels.size()))));
@@ -50,7 +53,14 @@ UnitAnnotations makeUnitAnnotations(const LoadedStudy& s, const signer::Signer& 
     };
     if (unit.story) {
         const ListedStory& story = s.listing.stories[unit.index];
-        for (std::size_t v = 0; v < story.clips.size(); ++v) make(story.clips[v], {v}, {}, story.sentences);
+        for (std::size_t v = 0; v < story.clips.size(); ++v) {
+            if (v < clips.size()) {
+                make(story.clips[v], {v}, {}, story.sentences);
+            } else {  // a lab's recording: no regions, no ELAN file (stimuli/study/study.cpp)
+                out.regions.emplace_back();
+                out.elan.emplace_back();
+            }
+        }
     } else {
         const ListedSentence& sentence = s.listing.sentences[unit.index];
         std::vector<std::string> labels;

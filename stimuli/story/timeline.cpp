@@ -542,11 +542,26 @@ private:
                 if (slots[i].first < t && t < slots[i].second) return static_cast<int>(i);
             return -1;
         };
+        // A sign that touches (the body, the other hand) starts and ends at its touch: the hand
+        // stops there rather than flowing through the surface (BOSS -> NICE: the shoulder tap's
+        // last key passed through sank 1.2 mm deeper than the touch).
+        std::vector<double> touchEdges;
+        for (const TimelineSpan& span : timeline_.spans)
+            if (span.contact.body || span.contact.hands) {
+                touchEdges.push_back(span.keysStartSeconds);
+                touchEdges.push_back(span.keysEndSeconds);
+            }
+        const auto atTouchEdge = [&](double t) {
+            for (double e : touchEdges)
+                if (std::abs(e - t) < 1e-9) return true;
+            return false;
+        };
         for (int h : {kRight, kLeft}) {
             std::vector<TimelineKey>& keys = track(h);
             for (std::size_t k = 1; k + 1 < keys.size(); ++k) {
                 const TimelineKey &a = keys[k - 1], &b = keys[k], &c = keys[k + 1];
                 if (a.rest || b.rest || c.rest) continue;
+                if (atTouchEdge(b.timeSeconds)) continue;
                 if (!(a.timeSeconds < b.timeSeconds && b.timeSeconds < c.timeSeconds)) continue;
                 const int r = region(b.timeSeconds);
                 if (region(a.timeSeconds) != r || region(c.timeSeconds) != r) continue;

@@ -121,7 +121,11 @@ std::string elanDocument(const std::vector<ElanPanel>& panels, const ElanDocumen
     // Tier id -> linguistic type, in the order the tiers are written.
     std::vector<std::pair<std::string, std::string>> tiers;
 
-    const Timeline* first = panels.empty() ? nullptr : panels.front().timeline;
+    // The tiers every panel shares come from the first panel the signer signs (a side-by-side
+    // clip's panel of a lab's recording has no timeline).
+    const Timeline* first = nullptr;
+    for (const ElanPanel& panel : panels)
+        if (!first) first = panel.timeline;
     if (first) {
         // Sentences: from the first item's keys to the last's.
         tiers.emplace_back("sentences", "sentence");

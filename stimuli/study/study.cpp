@@ -381,13 +381,16 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
         listing.versions.push_back(h->name);
         listing.versionLetters.push_back(h->letter);
     }
-    const auto clip = [&](const std::string& name) {
+    // Eye-tracking regions and ELAN files are written for what the signer signs: the stories' and
+    // the side-by-side clips (not a lab's recording, whose face and timing signstim does not know,
+    // nor the signed questions and instructions, which are not stimuli).
+    const auto clip = [&](const std::string& name, bool annotated = true) {
         ListedClip c;
         c.video = "clips/" + name + ".mp4";
         c.poster = "posters/" + name + ".png";
         if (pngFrames) c.frames = "frames/" + name;
-        if (study.regions) c.regions = "regions/" + name + ".csv";
-        if (study.elan) c.annotation = "elan/" + name + ".eaf";
+        if (study.regions && annotated) c.regions = "regions/" + name + ".csv";
+        if (study.elan && annotated) c.annotation = "elan/" + name + ".eaf";
         return c;
     };
     for (std::size_t s = 0; s < stories.size(); ++s) {
@@ -403,18 +406,18 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
             // Issue 24: a question with gloss has its clip when the study shows questions signed.
             if (showsSigned(study.questionsShown) && !question.gloss.empty()) {
                 item.gloss = question.gloss;
-                item.clip = clip(questionClipName(s, q));
+                item.clip = clip(questionClipName(s, q), false);
             }
             listed.questions.push_back(std::move(item));
         }
         for (VerbVersion v : study.versions) listed.clips.push_back(clip(storyClipName(s, v)));
         for (const HumanVersion* h : humans)
-            if (!h->phase1Clips.empty()) listed.clips.push_back(clip(storyId(s) + "_version-" + h->name));
+            if (!h->phase1Clips.empty()) listed.clips.push_back(clip(storyId(s) + "_version-" + h->name, false));
         listing.stories.push_back(std::move(listed));
     }
     for (const StudyInstruction& page : study.instructions) {
         ListedInstruction listed{page.page, page.text, page.gloss, {}};
-        if (showsSigned(study.instructionsShown)) listed.clip = clip(instructionClipName(page.page));
+        if (showsSigned(study.instructionsShown)) listed.clip = clip(instructionClipName(page.page), false);
         listing.instructions.push_back(std::move(listed));
     }
     StudyDesignSpec spec = study.designSpec();
