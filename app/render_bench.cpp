@@ -9,7 +9,7 @@
 // (on a CPU device such as lavapipe it is the work, and it is less sensitive than wall time
 // to other load). With frame sinks (PNG sequence, MP4) a second table gives each stage
 // alone and end to end, beside the slower stage, the serial sum and the shared-CPU bound.
-// A last row measures morph targets: the default signer with and without 52 face targets.
+// A last row measures morph targets: the default signer with its face targets animated, and without them.
 #include "app/commands.hpp"
 #include "common/atomic_file.hpp"
 #include "common/cleanup.hpp"
@@ -205,103 +205,77 @@ std::string sinkColumns(const Figure& render, const SinkFigures& sink, unsigned 
     return text;
 }
 
-// ARKit's 52 blend-shape names (Apple ARFaceAnchor.BlendShapeLocation): the targets a signer's
-// face will have. Only the names are used here; the displacements are synthetic.
-constexpr std::array<const char*, 52> kArkitNames = {
-    "eyeBlinkLeft", "eyeLookDownLeft", "eyeLookInLeft", "eyeLookOutLeft", "eyeLookUpLeft", "eyeSquintLeft",
-    "eyeWideLeft", "eyeBlinkRight", "eyeLookDownRight", "eyeLookInRight", "eyeLookOutRight", "eyeLookUpRight",
-    "eyeSquintRight", "eyeWideRight", "jawForward", "jawLeft", "jawRight", "jawOpen", "mouthClose",
-    "mouthFunnel", "mouthPucker", "mouthLeft", "mouthRight", "mouthSmileLeft", "mouthSmileRight",
-    "mouthFrownLeft", "mouthFrownRight", "mouthDimpleLeft", "mouthDimpleRight", "mouthStretchLeft",
-    "mouthStretchRight", "mouthRollLower", "mouthRollUpper", "mouthShrugLower", "mouthShrugUpper",
-    "mouthPressLeft", "mouthPressRight", "mouthLowerDownLeft", "mouthLowerDownRight", "mouthUpperUpLeft",
-    "mouthUpperUpRight", "browDownLeft", "browDownRight", "browInnerUp", "browOuterUpLeft", "browOuterUpRight",
-    "cheekPuff", "cheekSquintLeft", "cheekSquintRight", "noseSneerLeft", "noseSneerRight", "tongueOut"};
-
-// The default signer with 52 synthetic morph targets (kArkitNames) on its head: every vertex
-// whose strongest joint is "head" moves a few millimetres along its normal and its normal tilts, in each target (a
-// different pattern per target), the rest of the body not at all. Returns the count of head
-// vertices.
-std::size_t addSyntheticFaceTargets(render::Scene& scene) {
-    const int headNode = scene.findNode("head");
-    std::size_t moved = 0;
-    for (const render::Node& node : scene.nodes) {
-        if (node.mesh < 0 || node.skin < 0) continue;
-        const auto& joints = scene.skins[static_cast<std::size_t>(node.skin)].joints;
-        render::Mesh& mesh = scene.meshes[static_cast<std::size_t>(node.mesh)];
-        if (mesh.targetCount() > 0) continue;
-        for (render::Primitive& primitive : mesh.primitives) {
-            primitive.targets.assign(kArkitNames.size(), {});
-            for (std::size_t v = 0; v < primitive.vertices.size(); ++v) {
-                const render::Vertex& vertex = primitive.vertices[v];
-                int strongest = 0;
-                for (int k = 1; k < 4; ++k)
-                    if (vertex.weights[k] > vertex.weights[strongest]) strongest = k;
-                const std::uint32_t joint = vertex.joints[strongest];
-                const bool head = primitive.skinned && joint < joints.size() && joints[joint] == headNode;
-                if (head) ++moved;
-                for (std::size_t t = 0; t < kArkitNames.size(); ++t) {
-                    const float amount = head ? 0.004f * std::sin(1.7f * float(t) + 0.37f * float(v)) : 0.0f;
-                    primitive.targets[t].position.push_back(vertex.normal * amount);
-                    // Exporters write normal targets too; a tilt of the same pattern.
-                    primitive.targets[t].normal.push_back(head ? glm::vec3(0.1f * std::cos(0.9f * float(t) + 0.21f * float(v)), 0.0f, 0.0f)
-                                                               : glm::vec3(0.0f));
-                }
-            }
-        }
-        mesh.weights.assign(kArkitNames.size(), 0.0f);
-        mesh.targetNames.assign(kArkitNames.begin(), kArkitNames.end());
+// The default signer without its face targets: the same meshes, every morph target removed,
+// the baseline a face costs against.
+render::Scene withoutTargets(render::Scene scene) {
+    for (render::Mesh& mesh : scene.meshes) {
+        for (render::Primitive& primitive : mesh.primitives) primitive.targets.clear();
+        mesh.weights.clear();
+        mesh.targetNames.clear();
     }
-    return moved;
+    return scene;
 }
 
-// The morph row: the signer without targets ("plain") against the signer with 52 targets,
-// all 52 weights non-zero and different in every frame (set by name, as a signer would).
+// The morph row (issue 23 §1: "52 targets on the signer cost <= 10 % of its frames/s"): the
+// default signer with its own face targets (signer/avatar_face.hpp), all weights non-zero and
+// different in every frame (set by name, as the signer sets them), against the same signer with
+// the targets removed ("plain").
 void runMorphBench(const BenchSettings& settings, std::uint32_t frames) {
-    const render::Scene plain = signer::buildDefaultAvatar();
-    render::Scene morphed = plain;
-    const std::size_t headVertices = addSyntheticFaceTargets(morphed);
-    std::size_t vertices = 0;
-    for (const render::Mesh& mesh : plain.meshes)
-        for (const render::Primitive& primitive : mesh.primitives) vertices += primitive.vertices.size();
+    const render::Scene face = signer::buildDefaultAvatar();
+    const render::Scene plain = withoutTargets(face);
+    std::vector<std::string> names;
+    std::size_t vertices = 0, morphed = 0;
+    for (const render::Mesh& mesh : face.meshes) {
+        names.insert(names.end(), mesh.targetNames.begin(), mesh.targetNames.end());
+        for (const render::Primitive& primitive : mesh.primitives) {
+            vertices += primitive.vertices.size();
+            for (std::size_t v = 0; v < primitive.vertices.size(); ++v)
+                morphed += std::any_of(primitive.targets.begin(), primitive.targets.end(), [&](const render::MorphTarget& t) {
+                    return v < t.position.size() && t.position[v] != glm::vec3(0.0f);
+                });
+        }
+    }
     render::RendererOptions options;
     options.device = settings.device;
     options.width = 640;
     options.height = 480;
     render::Renderer renderer(options);
     const int plainHandle = renderer.addScene(plain);
-    const int morphHandle = renderer.addScene(morphed);
+    const int faceHandle = renderer.addScene(face);
     render::View view;
     view.camera = render::frameBounds(render::computeBounds(plain, render::restPose(plain)), 640.0f / 480.0f);
-    std::vector<render::Frame> plainFrames, morphFrames;
+    std::vector<render::Frame> plainFrames, faceFrames;
     for (std::uint32_t i = 0; i < 16; ++i) {
         render::Frame frame;
         view.scene = plainHandle;
         view.pose = render::Pose{};
         frame.views = {view};
         plainFrames.push_back(frame);
-        view.scene = morphHandle;
-        for (std::size_t t = 0; t < kArkitNames.size(); ++t)
-            view.pose.morphByName[kArkitNames[t]] = 0.5f + 0.45f * std::sin(0.4f * float(i) + float(t));
+        view.scene = faceHandle;
+        for (std::size_t t = 0; t < names.size(); ++t)
+            view.pose.morphByName[names[t]] = 0.5f + 0.45f * std::sin(0.4f * float(i) + float(t));
         frame.views = {view};
-        morphFrames.push_back(frame);
+        faceFrames.push_back(frame);
     }
     Figure plainBest, morphBest;
     for (std::uint32_t round = 0; round < settings.rounds; ++round) {
         keepBest(plainBest, measurePipelined(renderer, plainFrames, frames, nullptr));
-        keepBest(morphBest, measurePipelined(renderer, morphFrames, frames, nullptr));
+        keepBest(morphBest, measurePipelined(renderer, faceFrames, frames, nullptr));
     }
     const double ratio = morphBest.fps / plainBest.fps;
     std::printf(
-        "\nMorph targets: the default signer (%zu vertices) plain, and with %zu synthetic targets named as "
-        "ARKit's blend shapes on its %zu head vertices (all weights non-zero, new every frame); 640x480, MSAA 1x, "
-        "renderer pipelined. Goal: morph fps >= 0.90 x plain fps\n\n",
-        vertices, kArkitNames.size(), headVertices);
-    std::printf("| signer | targets | plain fps | morph fps | morph/plain | plain cpu | morph cpu | goal |\n");
-    std::printf("|--------|---------|-----------|-----------|-------------|-----------|-----------|------|\n");
-    std::printf("| default | %7zu | %9.0f | %9.0f | %11.3f | %9.2f | %9.2f | %s |\n", kArkitNames.size(),
+        "\nMorph targets: the default signer (%zu vertices) with its %zu face targets (%zu vertices moved by "
+        "them; all weights non-zero, new every frame) against the same signer without targets (plain); "
+        "640x480, MSAA 1x, renderer pipelined. Goal: morph fps >= 0.90 x plain fps\n\n",
+        vertices, names.size(), morphed);
+    // CPU time per frame is the work on a CPU device (lavapipe) and less sensitive than wall
+    // time to other load, so its ratio is printed beside (plain cpu / morph cpu: the fps ratio
+    // the work alone would give).
+    std::printf("| signer | targets | plain fps | morph fps | morph/plain | plain cpu | morph cpu | cpu plain/morph | goal |\n");
+    std::printf("|--------|---------|-----------|-----------|-------------|-----------|-----------|-----------------|------|\n");
+    std::printf("| default | %7zu | %9.0f | %9.0f | %11.3f | %9.2f | %9.2f | %15.3f | %s |\n", names.size(),
                 plainBest.fps, morphBest.fps, ratio, plainBest.cpuMs, morphBest.cpuMs,
-                ratio >= 0.90 ? "met" : "MISSED");
+                plainBest.cpuMs / morphBest.cpuMs, ratio >= 0.90 ? "met" : "MISSED");
     std::fflush(stdout);
 }
 
@@ -486,7 +460,7 @@ void registerRenderBenchCommands(Commands& commands) {
         "render",
         "Renderer frames/s (render + readback, +PNG, +MP4) at 640x480 and 1280x720, MSAA 1x/4x, "
         "~20k/~100k triangles, beside raw Vulkan draw-and-readback baselines (renderer's shading; one-line shading); "
-        "then the default signer with 52 morph targets against without");
+        "then the default signer with its face targets animated against without");
     bench->add_option("--device", settings->device, "Vulkan device name substring or index");
     bench->add_option("--frames", settings->frames, "Frames per measurement")
         ->capture_default_str();
@@ -497,7 +471,7 @@ void registerRenderBenchCommands(Commands& commands) {
     bench->add_flag("--quick", settings->quick, "640x480, 20k triangles, at most 20 frames");
     bench->add_flag("!--no-sinks", settings->sinks, "Skip the +PNG and +MP4 columns");
     bench->add_flag("--morph-only", settings->morphOnly,
-                    "Only the morph-target row (the default signer with and without 52 face targets)");
+                    "Only the morph-target row (the default signer with its face targets animated, and without)");
     bench->callback([settings] { runRenderBench(*settings); });
 }
 

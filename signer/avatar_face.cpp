@@ -7,7 +7,8 @@ namespace signstim::signer {
 
 const std::vector<std::string>& faceTargetNames() {
     // ARKit-52 names (Apple, ARFaceAnchor.BlendShapeLocation) of the shapes the default signer
-    // has; the eye-look and jaw-sideways shapes are left out (the eye bones turn the eyes).
+    // has; eyeLookIn/Out and the jaw's forward and sideways shapes are left out (the eye bones
+    // turn the eyes; the file's size: scenes/avatar/signer.glb stays under 2 MiB).
     static const std::vector<std::string> names{
         "browInnerUp",     "browDownLeft",     "browDownRight",    "browOuterUpLeft",   "browOuterUpRight",
         "eyeBlinkLeft",    "eyeBlinkRight",    "eyeSquintLeft",    "eyeSquintRight",    "eyeWideLeft",
@@ -15,7 +16,12 @@ const std::vector<std::string>& faceTargetNames() {
         "noseSneerRight",  "jawOpen",          "mouthClose",       "mouthFunnel",       "mouthPucker",
         "mouthStretchLeft", "mouthStretchRight", "mouthPressLeft", "mouthPressRight",   "mouthSmileLeft",
         "mouthSmileRight", "mouthFrownLeft",   "mouthFrownRight",  "mouthUpperUpLeft",  "mouthUpperUpRight",
-        "mouthRollLower",  "tongueOut"};
+        "mouthRollLower",  "tongueOut",
+        // Added after the first 32 (their order kept): the lids' share of a look up or down,
+        // and the rest of the mouth (mouthShrugLower: the lower lip of MM, docs/nonmanuals.md).
+        "eyeLookUpLeft", "eyeLookUpRight", "eyeLookDownLeft", "eyeLookDownRight", "mouthShrugLower",
+        "mouthShrugUpper", "mouthRollUpper", "mouthLowerDownLeft", "mouthLowerDownRight", "mouthDimpleLeft",
+        "mouthDimpleRight", "mouthLeft", "mouthRight"};
     return names;
 }
 

@@ -120,6 +120,10 @@ private:
         else if (base == "eyeWide") { to.upper = up + 20.0f * kDeg * open; to.lower = low - 5.0f * kDeg * open; }
         else if (base == "eyeSquint") { to.upper = up - 6.0f * kDeg * open; to.lower = low + 13.0f * kDeg * open; }
         else if (base == "cheekSquint") to.lower = low + 7.0f * kDeg * open;
+        // [D] The lids follow the eye's vertical gaze (the eye bones turn the eyeball itself):
+        // the upper lid rises with a look up and falls with a look down, the lower lid a little.
+        else if (base == "eyeLookUp") { to.upper = up + 8.0f * kDeg * open; to.lower = low + 3.0f * kDeg * open; }
+        else if (base == "eyeLookDown") { to.upper = up - 12.0f * kDeg * open; to.lower = low - 2.0f * kDeg * open; }
         else return glm::vec3(0.0f);
         const glm::vec3 eye = l_.eye[range.side > 0.0f ? 0 : 1];
         const float radius = glm::length(p - eye);
@@ -211,6 +215,15 @@ private:
         }
         if (base == "mouthRollLower")
             return part == Part::LowerLip ? glm::vec3(0.0f, 0.0015f, -0.004f) : glm::vec3(0.0f);
+        if (base == "mouthRollUpper")
+            return part == Part::UpperLip ? glm::vec3(0.0f, -0.0015f, -0.004f) : glm::vec3(0.0f);
+        if (base == "mouthShrugUpper")  // the upper lip pushed up and out
+            return part == Part::UpperLip ? glm::vec3(0.0f, 0.0015f, 0.0015f) : glm::vec3(0.0f);
+        if (base == "mouthShrugLower") {  // the chin raised (AU 17): the lower lip pushed up and out, the chin with it
+            if (part == Part::LowerLip) return {0.0f, 0.0025f, 0.0015f};
+            if (part == Part::Skin && p.y < l_.mouth.y - 0.006f) return 0.6f * region * jawness(p) * glm::vec3(0.0f, 0.0025f, 0.001f);
+            return glm::vec3(0.0f);
+        }
         if (side == 0.0f) return glm::vec3(0.0f);
         // Sided shapes: the corner on that side moves; the lips follow toward it.
         const glm::vec3 corner = l_.mouth + glm::vec3(side * 0.024f, 0.0f, -0.004f);
@@ -220,6 +233,11 @@ private:
         if (base == "mouthSmile") return toward * glm::vec3(side * 0.004f, 0.0055f, -0.003f);
         if (base == "mouthFrown") return toward * glm::vec3(0.0f, -0.005f, -0.0005f);
         if (base == "mouthStretch") return toward * glm::vec3(side * 0.006f, -0.0015f, -0.002f);
+        if (base == "mouthDimple") return toward * glm::vec3(side * 0.002f, 0.0005f, -0.0035f);  // the corner drawn back
+        if (base == "mouth")  // mouthLeft/Right: the closed mouth pulled toward that side
+            return (lip || part == Part::Mouth || part == Part::Tongue ? 1.0f : 0.6f) * region * glm::vec3(side * 0.005f, 0.0f, 0.0f);
+        if (base == "mouthLowerDown" && (part == Part::LowerLip || (part == Part::Mouth && !upper)))
+            return smoothstep(-0.5f, 0.5f, side * u) * glm::vec3(0.0f, -0.003f, 0.0005f);
         if (base == "mouthPress")
             return half * glm::vec3(0.0f, part == Part::UpperLip ? -0.0015f : 0.0018f, -0.0015f);
         if (base == "mouthUpperUp") {

@@ -291,7 +291,7 @@ void addNonManuals(const Story& story, double rate, Timeline& timeline) {
     std::sort(anchors.begin(), anchors.end());
     std::vector<double> blinks;  // from the grammar, no two too close
     for (double t : anchors)
-        if (blinks.empty() || t >= blinks.back() + kMinimumBlinkGapSeconds) blinks.push_back(t);
+        if (blinks.empty() || t >= blinks.back() + kMinimumBoundaryBlinkGapSeconds) blinks.push_back(t);
     SplitMix64 random(storySeed(story));
     std::vector<double> natural;
     double from = tellingStart;

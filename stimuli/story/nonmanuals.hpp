@@ -41,10 +41,16 @@ inline constexpr double kBlinkOpenSeconds = 0.15;
 // Bentivoglio et al. 1997: ~26 blinks/min in conversation, ~17 at rest] Between the boundary
 // blinks (and a topic's or a condition's end), blinks come every 2-6 s (uniform, mean 4 s:
 // 15/min besides the boundaries), from a generator seeded by the story's title and sentences
-// (common/random.hpp); no two blinks start closer than kMinimumBlinkGapSeconds.
+// (common/random.hpp); no natural blink starts closer than kMinimumBlinkGapSeconds to another.
 inline constexpr double kBlinkIntervalMinimumSeconds = 2.0;
 inline constexpr double kBlinkIntervalMaximumSeconds = 6.0;
 inline constexpr double kMinimumBlinkGapSeconds = 1.0;
+// [D] The blinks the grammar places (sentence ends, a topic's or a condition's end, [blink])
+// may be as close as this to each other (twice a blink's 0.25 s: the eye open again as long as
+// it was shut); a natural blink keeps kMinimumBlinkGapSeconds from every other. Looked at
+// (issue 23): story 03's topic [t MEETING] ends 0.9 s after the sentence before it ended, and
+// with the 1 s rule its blink, the topic's boundary mark (Baker & Padden 1978), was dropped.
+inline constexpr double kMinimumBoundaryBlinkGapSeconds = 0.5;
 // [D, SPEC §6.2] Role shift: the torso turns 30 % of the way toward the character (at most
 // 0.3 rad, ~17°), the head 30 % more (at most 0.35 rad; the gaze-driven head turn does the
 // rest), the torso shifts up to 25 mm toward that side.

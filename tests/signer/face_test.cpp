@@ -7,13 +7,22 @@
 #include "signer/signer_pose.hpp"
 #include "signer/timeline_clip.hpp"
 #include "renderer/gltf_loader.hpp"
+#include "stimuli/json_source.hpp"
+#include "stimuli/story/handshapes.hpp"
+#include "stimuli/story/lexicon.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/story/timeline_builder.hpp"
+#include "stimuli/verbs/verbs.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
+#include <stdexcept>
 #include <string>
 
 using namespace signstim;
@@ -76,21 +85,30 @@ TEST(FaceTargets, DefaultSignerHasEveryArkitShapeOnItsFaceAndEachMovesIt) {
                              "noseSneerRight", "jawOpen", "mouthClose", "mouthFunnel", "mouthPucker",
                              "mouthStretchLeft", "mouthStretchRight", "mouthPressLeft", "mouthPressRight",
                              "mouthSmileLeft", "mouthSmileRight", "mouthFrownLeft", "mouthFrownRight",
-                             "mouthUpperUpLeft", "mouthUpperUpRight", "mouthRollLower", "tongueOut"}) {
+                             "mouthUpperUpLeft", "mouthUpperUpRight", "mouthRollLower", "tongueOut",
+                             "eyeLookUpLeft", "eyeLookUpRight", "eyeLookDownLeft", "eyeLookDownRight",
+                             "mouthShrugLower", "mouthShrugUpper", "mouthRollUpper", "mouthLowerDownLeft",
+                             "mouthLowerDownRight", "mouthDimpleLeft", "mouthDimpleRight", "mouthLeft", "mouthRight"}) {
         const auto it = std::find(face.targetNames.begin(), face.targetNames.end(), name);
         ASSERT_NE(it, face.targetNames.end()) << name;
         const auto k = static_cast<std::size_t>(it - face.targetNames.begin());
-        float largest = 0.0f, leftX = 0.0f, rightX = 0.0f;
+        float largest = 0.0f, leftX = 0.0f, rightX = 0.0f, sideways = 0.0f;
         for (const render::Primitive& p : face.primitives)
             for (std::size_t v = 0; v < p.vertices.size(); ++v) {
                 const float d = glm::length(p.targets[k].position[v]);
                 largest = std::max(largest, d);
                 (p.vertices[v].position.x > 0.0f ? leftX : rightX) += d;
+                sideways += p.targets[k].position[v].x;
             }
         // Each shape moves something visibly (a millimetre or more) ...
         EXPECT_GT(largest, 0.001f) << name;
-        // ... and a sided one moves its own side (ARKit's Left: the face's own left, +x) most.
         const std::string n = name;
+        // ... mouthLeft/Right pull the whole mouth toward that side (+x: the face's own left) ...
+        if (n == "mouthLeft" || n == "mouthRight") {
+            EXPECT_GT(n == "mouthLeft" ? sideways : -sideways, 0.0f) << name;
+            continue;
+        }
+        // ... and another sided one moves its own side (ARKit's Left: the face's own left, +x) most.
         if (n.size() > 4 && n.compare(n.size() - 4, 4, "Left") == 0) {
             EXPECT_GT(leftX, 3.0f * rightX) << name;
         }
@@ -98,6 +116,42 @@ TEST(FaceTargets, DefaultSignerHasEveryArkitShapeOnItsFaceAndEachMovesIt) {
             EXPECT_GT(rightX, 3.0f * leftX) << name;
         }
     }
+}
+
+TEST(FaceTargets, EveryFaceChannelOfEveryMarkerIsAShapeOfTheDefaultSigner) {
+    // Looked at (issue 23, "Tests and looking"): [mm ...] wrote mouthShrugLower, which the face
+    // lacked, so MM showed without its pushed-up lower lip. Every face weight a marker, a blink
+    // or a mouthed word writes must be a target of the default signer, or it silently shows
+    // nothing. A story with every marker (synthetic).
+    const std::filesystem::path scenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR) / "scenes";
+    const stimuli::HandshapeLibrary shapes = stimuli::loadHandshapes(scenes / "handshapes.json", rig().handModel());
+    const stimuli::Lexicon lexicon = stimuli::loadLexicon(scenes / "lexicon", shapes, rig().handModel());
+    const stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(scenes / "verbs.json");
+    stimuli::StoryVocabulary vocabulary;
+    vocabulary.verbs = &verbs;
+    vocabulary.signs = lexicon.glosses();
+    const std::string text = R"J({"format": "signstim-story", "version": 1, "title": "Every marker (synthetic)",
+  "characters": [{"gloss": "JOHN", "position": 0.9}, {"gloss": "MARY", "position": -0.6}],
+  "sentences": ["JOHN IX(0.9) [mm HELP] [oo KNOW] [cha HELP] [th KNOW]",
+                "MARY IX(-0.6) [pah HELP] [cs KNOW] [puff HELP] [nod] [blink]",
+                "[t HELP] [y/n KNOW]", "[cond HELP] [wh KNOW]", "[rhq HELP] [neg NOT KNOW]",
+                "[rs(MARY) [aff HELP]] [mouth(book) BOOK]"]})J";
+    const stimuli::Story story = stimuli::parseStory(stimuli::parseJsonText(text, "every-marker.json"), vocabulary);
+    stimuli::TimelineSources sources;
+    sources.lexicon = &lexicon;
+    sources.shapes = &shapes;
+    sources.verbs = [](const std::string& verb, stimuli::VerbVersion, double, double, int, int) -> stimuli::VerbPerformance {
+        throw std::logic_error("the story has no verb, yet " + verb + " was asked for");
+    };
+    const stimuli::Timeline timeline = stimuli::buildTimeline(story, stimuli::VerbVersion::Point, sources);
+    const std::vector<std::string>& targets = signer::faceTargetNames();
+    std::size_t weights = 0;
+    for (const stimuli::NonManualTrack& track : timeline.nonManuals) {
+        if (track.channel.find('.') != std::string::npos) continue;  // head, torso, shoulders: bones
+        ++weights;
+        EXPECT_NE(std::find(targets.begin(), targets.end(), track.channel), targets.end()) << track.channel;
+    }
+    EXPECT_GT(weights, 20u);  // the markers' face channels were there to check
 }
 
 TEST(FaceTargets, CommittedSignerKeepsEveryTargetThroughItsSparseStorage) {

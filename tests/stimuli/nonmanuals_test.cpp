@@ -243,6 +243,32 @@ TEST(NonManualTiming, AYesNoQuestionHoldsItsLastSignWithTheBrowsUp) {
                 asked.durationSeconds, 1e-12);
 }
 
+TEST(NonManualTiming, ATopicEndsWithABlinkEvenSoonAfterASentenceEnd) {
+    // Looked at (issue 23): story 03's [t MEETING] ends 0.9 s after the sentence before it, and
+    // its blink (Baker & Padden 1978: the topic's boundary) was dropped for being within 1 s of
+    // that sentence's blink.
+    const Story story = world().loadStory(storyFile(3));
+    const Timeline t = build(story);
+    double topicEnd = -1.0;
+    int topicSentence = -1;
+    for (std::size_t s = 0; s < story.sentences.size(); ++s)
+        for (const StoryMarker& m : story.sentences[s].markers)
+            if (m.marker == "topic") {
+                topicSentence = static_cast<int>(s);
+                topicEnd = manual(t, topicSentence, m.firstItem, m.lastItem).second;
+            }
+    ASSERT_GE(topicSentence, 1);
+    const double before = manual(t, topicSentence - 1, 0, 1000).second;
+    ASSERT_LT(topicEnd - before, kMinimumBlinkGapSeconds);  // the case that dropped it
+    const auto blinkAt = [&](double when) {
+        return std::any_of(t.nonManualSpans.begin(), t.nonManualSpans.end(), [&](const NonManualSpan& s) {
+            return s.marker == "blink" && std::abs(s.startSeconds - when) < 1e-9;
+        });
+    };
+    EXPECT_TRUE(blinkAt(before));
+    EXPECT_TRUE(blinkAt(topicEnd));
+}
+
 TEST(NonManualTiming, BlinksFallAtEverySentenceEndAndAtANaturalRateBetween) {
     for (int n = 1; n <= 12; ++n) {
         const Story story = world().loadStory(storyFile(n));
@@ -256,14 +282,14 @@ TEST(NonManualTiming, BlinksFallAtEverySentenceEndAndAtANaturalRateBetween) {
         for (std::size_t s = 0; s < story.sentences.size(); ++s) {
             const double end = manual(t, static_cast<int>(s), 0, 1000).second;
             const bool atEnd = std::any_of(blinks.begin(), blinks.end(), [&](double b) {
-                return std::abs(b - end) < 1e-9 || (b < end && end - b < kMinimumBlinkGapSeconds);
+                return std::abs(b - end) < 1e-9 || (b < end && end - b < kMinimumBoundaryBlinkGapSeconds);
             });
             EXPECT_TRUE(atEnd) << n << " sentence " << s + 1;
         }
-        // Never two blinks closer than the minimum; between the first sign and the last
-        // sentence's end, never a gap longer than the longest natural interval.
+        // Never two blinks closer than the minimum (boundaries' blinks); between the first sign
+        // and the last sentence's end, never a gap longer than the longest natural interval.
         for (std::size_t i = 1; i < blinks.size(); ++i) {
-            EXPECT_GE(blinks[i] - blinks[i - 1], kMinimumBlinkGapSeconds - 1e-9) << n;
+            EXPECT_GE(blinks[i] - blinks[i - 1], kMinimumBoundaryBlinkGapSeconds - 1e-9) << n;
             EXPECT_LE(blinks[i] - blinks[i - 1], kBlinkIntervalMaximumSeconds + 1e-9) << n;
         }
         // A natural rate: Bentivoglio et al. 1997 count ~17-26 a minute; 10 to 40 here.
