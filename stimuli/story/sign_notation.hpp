@@ -55,6 +55,9 @@ struct NotationContact {
 
 struct NotationPart {
     int line = 0;
+    // The two hands' relation in this part: its own "hands", else the sign's (a compound such
+    // as STUDENT joins a base-hand part to a symmetric one).
+    HandRelation hands = HandRelation::One;
     double seconds = 0.0;  // citation time of the part, its repetitions included
     double transitionSeconds = 0.0;  // from the previous part's end (0 for the first)
     std::string handshape, endHandshape;  // endHandshape == handshape when it does not change
@@ -106,9 +109,16 @@ struct NotationProvenance {
 };
 
 struct SignNotation {
-    HandRelation hands = HandRelation::One;
+    HandRelation hands = HandRelation::One;  // the sign's relation, each part's unless it names its own
     std::vector<NotationPart> parts;
     NotationProvenance provenance;
+    // Whether any part uses the left hand (then the sign has two hands throughout; in a
+    // one-handed part the left hand holds still where it was, or where it is next needed).
+    bool twoHanded() const {
+        for (const NotationPart& p : parts)
+            if (p.hands != HandRelation::One) return true;
+        return hands != HandRelation::One;
+    }
 };
 
 // A contact event of the compiled sign: where the acting hand's point must be, and when.

@@ -122,12 +122,12 @@ std::vector<AslLexCode> deriveAslLexCode(const SignNotation& n, const HandshapeL
     for (const NotationPart& p : n.parts) {
         AslLexCode c;
         c.handshape = labelOf(shapes, p.handshape);
-        const bool base = n.hands == HandRelation::Base && !p.baseHandshape.empty();
-        if (n.hands == HandRelation::One || (n.hands == HandRelation::Base && !base)) c.signType = "OneHanded";
+        const bool base = p.hands == HandRelation::Base && !p.baseHandshape.empty();
+        if (p.hands == HandRelation::One || (p.hands == HandRelation::Base && !base)) c.signType = "OneHanded";
         else if (!base) c.signType = "SymmetricalOrAlternating";
         else c.signType = labelOf(shapes, p.baseHandshape) == c.handshape ? "AsymmetricalSameHandshape" : "AsymmetricalDifferentHandshape";
         if (base) c.nondominant = labelOf(shapes, p.baseHandshape);
-        else if (n.hands != HandRelation::One && n.hands != HandRelation::Base) c.nondominant = c.handshape;
+        else if (p.hands != HandRelation::One && p.hands != HandRelation::Base) c.nondominant = c.handshape;
         switch (p.path) {
             case PathShape::None: c.movement = "None"; break;
             case PathShape::Straight: c.movement = "Straight"; break;
@@ -229,8 +229,10 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         double best = 1e18;
         for (const auto& [name, point] : lexicon.locations)
             if (glm::distance(point, touch) < best) best = glm::distance(point, touch), nearest = name;
-        if (n.hands == HandRelation::Base && !p.baseHandshape.empty())
-            for (const char* name : {"hand:palm", "hand:back", "hand:heel", "hand:radial", "hand:ulnar", "hand:fingertips", "arm:wrist", "arm:forearm"}) {
+        if (p.hands == HandRelation::Base && !p.baseHandshape.empty())
+            for (const char* name : {"hand:palm", "hand:back", "hand:heel", "hand:radial", "hand:ulnar", "hand:fingertips",
+                                     "hand:thumb", "hand:index", "hand:middle", "hand:ring", "hand:little", "arm:wrist",
+                                     "arm:forearm"}) {
                 const double d = glm::distance(otherHandPoint(placeTime, name), touch);
                 if (d < best) best = d, nearest = name;
             }
@@ -321,18 +323,38 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
     }
     // Two hands that never touch stay apart; the relation holds at every sample.
     if (tracks.size() == 2) {
+        // The relation holds inside its own parts' strokes (a compound changes it).
+        bool anyMirrored = false, anyBase = false;
+        for (const NotationPart& p : n.parts) {
+            anyMirrored = anyMirrored || p.hands == HandRelation::Mirrored;
+            anyBase = anyBase || p.hands == HandRelation::Base;
+        }
+        // A part entered from another relation: the hands arrive from places that are no mirror
+        // images, and the pass through the part's first key carries that in (sampleTrack), so
+        // the relation is measured from its second key on.
+        const auto mirroredAt = [&](double t) {
+            for (std::size_t i = 0; i < n.parts.size() && i < sign.strokes.size(); ++i) {
+                if (n.parts[i].hands != HandRelation::Mirrored || t < sign.strokes[i].startSeconds - 1e-9 ||
+                    t > sign.strokes[i].endSeconds + 1e-9)
+                    continue;
+                if (i == 0 || n.parts[i - 1].hands == HandRelation::Mirrored) return true;
+                for (const TimelineKey& key : tracks[0])
+                    if (key.timeSeconds > sign.strokes[i].startSeconds + 1e-9) return t >= key.timeSeconds - 1e-9;
+            }
+            return false;
+        };
         double closest = 1e18, worst = 0.0;
         for (double t = 0.0; t <= total + 1e-9; t += kSampleSeconds) {
             const Sampled r = sampleAt(tracks[0], t), l = sampleAt(tracks[1], t);
             const glm::dvec3 rp = handPointInSpace(r.pose, *handPointMm(model, r.controls, hand::Side::Right, "palm"));
             const glm::dvec3 lp = handPointInSpace(l.pose, *handPointMm(model, l.controls, hand::Side::Left, "palm"));
             closest = std::min(closest, glm::distance(rp, lp));
-            if (n.hands == HandRelation::Mirrored)
+            if (mirroredAt(t))
                 worst = std::max(worst, glm::distance(l.pose.positionMm, glm::dvec3(-r.pose.positionMm.x, r.pose.positionMm.y, r.pose.positionMm.z)));
         }
         if (!sign.contact.hands) add("hands apart", closest >= kHandsApartMm, format("palms at least %.0f mm apart", closest));
-        if (n.hands == HandRelation::Mirrored) add("hands mirrored", worst < 0.5, format("%.2f mm from the mirror image at worst", worst));
-        if (n.hands == HandRelation::Base) {
+        if (anyMirrored) add("hands mirrored", worst < 0.5, format("%.2f mm from the mirror image at worst", worst));
+        if (anyBase) {
             double moved = 0.0;
             for (std::size_t i = 0; i < sign.strokes.size(); ++i)
                 if (!n.parts[i].baseHandshape.empty())
@@ -342,8 +364,9 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
             add("base hand still", moved < 0.5, format("moves %.2f mm", moved));
         }
     }
-    add("hands", static_cast<int>(sign.hands.size()) == (n.hands == HandRelation::One ? 1 : 2),
-        std::to_string(sign.hands.size()) + " (" + toString(n.hands) + ")");
+    std::string relations;
+    for (const NotationPart& p : n.parts) relations += (relations.empty() ? "" : ", ") + toString(p.hands);
+    add("hands", static_cast<int>(sign.hands.size()) == (n.twoHanded() ? 2 : 1), std::to_string(sign.hands.size()) + " (" + relations + ")");
     return checks;
 }
 

@@ -22,6 +22,11 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kCircleSamples = 12, kArcSamples = 6, kWavySamples = 12;
 // [D] An arc bulges by 15 % of its chord (at least 15 mm), a zigzag or wave by 15 %.
 constexpr double kArcBulge = 0.15, kArcMinimumBulgeMm = 15.0, kZigzagWidth = 0.15;
+// [D] A zigzag has two corners (a Z), each 12 % of the chord to alternate sides: the turn at a
+// corner is 55° (segments (1/3, 0.12) and (1/3, −0.24) of the chord), under the 90° at which
+// sampleTrack stops the hand.
+constexpr int kZigzagCorners = 2;
+constexpr double kZigzagCornerWidth = 0.12;
 // [D] A lifted return takes 60 % of the stroke's time and clears the surface by 30 % of the
 // stroke's length (at least 15 mm): the quick return of a tap (issue 22: "quick lifted return").
 constexpr double kLiftedReturnTime = 0.6, kLiftedHeight = 0.3, kLiftedMinimumMm = 15.0;
@@ -51,15 +56,17 @@ public:
         : n_(n), locations_(locations), shapes_(shapes), model_(model), source_(source), pointer_(pointer) {}
 
     CompiledNotation compile() {
-        const bool twoHands = n_.hands != HandRelation::One;
+        const bool twoHands = n_.twoHanded();
         out_.hands = twoHands ? std::vector<HandSide>{HandSide::Right, HandSide::Left} : std::vector<HandSide>{HandSide::Right};
         out_.keyframes.resize(out_.hands.size());
         out_.passThrough.resize(out_.hands.size());
-        if (n_.hands == HandRelation::Base) {
-            bool any = false;
-            for (const NotationPart& p : n_.parts) any = any || !p.baseHandshape.empty();
-            if (!any) source_.failAt(pointer_ + "/notation/parts/0/base", "a sign with \"hands\": \"base\" needs a base hand in a part");
+        bool anyBase = false, anyBaseHand = false;
+        for (const NotationPart& p : n_.parts) {
+            anyBase = anyBase || p.hands == HandRelation::Base;
+            anyBaseHand = anyBaseHand || !p.baseHandshape.empty();
         }
+        if (anyBase && !anyBaseHand)
+            source_.failAt(pointer_ + "/notation/parts/0/base", "a part with \"hands\": \"base\" needs a base hand in a part");
         double t = 0.0;
         for (std::size_t i = 0; i < n_.parts.size(); ++i) {
             part_ = static_cast<int>(i);
@@ -68,6 +75,7 @@ public:
             compilePart(n_.parts[i], t);
             t += n_.parts[i].seconds;
         }
+        if (twoHands) holdLeftInOneHandedParts();
         for (const ContactEvent& e : out_.contacts) {
             const bool onHand = e.at.rfind("hand:", 0) == 0 || e.at.rfind("arm:", 0) == 0;
             (onHand ? out_.contact.hands : out_.contact.body) = true;
@@ -88,11 +96,22 @@ private:
         return *p;
     }
 
-    // The base hand's pose in `part` (the next part's where this one has none: it waits there).
+    // The part whose base hand holds in `part`: its own; else the next part's (the base hand
+    // waits where it is needed); else, after the last part with one, the previous part's (the
+    // still hand stays where it was). -1: no part has a base hand.
+    int basePart(std::size_t part) const {
+        for (std::size_t i = part; i < n_.parts.size(); ++i)
+            if (!n_.parts[i].baseHandshape.empty()) return static_cast<int>(i);
+        for (std::size_t i = std::min(part, n_.parts.size()); i-- > 0;)
+            if (!n_.parts[i].baseHandshape.empty()) return static_cast<int>(i);
+        return -1;
+    }
+
+    // The base hand's pose in `part` (basePart).
     std::optional<HandPose> basePose(std::size_t part) const {
-        for (std::size_t i = part; i < n_.parts.size(); ++i) {
-            const NotationPart& p = n_.parts[i];
-            if (p.baseHandshape.empty()) continue;
+        const int i = basePart(part);
+        if (i >= 0) {
+            const NotationPart& p = n_.parts[static_cast<std::size_t>(i)];
             const glm::dquat q = orientationFromFingersPalm(p.baseFingers, p.basePalm);
             const glm::dvec3 palm = point(p.baseHandshape, hand::Side::Left, "palm", "");
             HandPose pose;
@@ -117,7 +136,8 @@ private:
     // A place in signing space: a body location, or a point of the base hand in this part.
     glm::dvec3 resolve(const NotationPlace& place, const std::string& field) const {
         if (!place.onOtherHand()) return body(place, field);
-        const std::optional<HandPose> base = n_.hands == HandRelation::Base ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
+        const bool isBase = n_.parts[static_cast<std::size_t>(part_)].hands == HandRelation::Base;
+        const std::optional<HandPose> base = isBase ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
         if (!base) source_.failAt(field, "a place on the other hand needs \"hands\": \"base\" and the part's base hand");
         const std::string name = place.name.substr(place.name.find(':') + 1);
         const std::string& shape = n_.parts[static_cast<std::size_t>(part_)].baseHandshape.empty()
@@ -127,9 +147,8 @@ private:
     }
 
     const std::string& baseShapeFrom(std::size_t part) const {
-        for (std::size_t i = part; i < n_.parts.size(); ++i)
-            if (!n_.parts[i].baseHandshape.empty()) return n_.parts[i].baseHandshape;
-        return n_.parts.back().baseHandshape;
+        const int i = basePart(part);
+        return n_.parts[static_cast<std::size_t>(std::max(i, 0))].baseHandshape;
     }
 
     // The stroke's samples from start to end (palm origins).
@@ -164,12 +183,16 @@ private:
                 break;
             }
             case PathShape::Zigzag: {
-                const int corners = 4;
-                for (int k = 0; k <= corners + 1; ++k) {
-                    const double u = static_cast<double>(k) / (corners + 1);
-                    const double lateral = k == 0 || k == corners + 1 ? 0.0 : (k % 2 ? 1.0 : -1.0) * kZigzagWidth * length;
-                    // Corners: the hand turns sharply there and nearly stops (not via points).
-                    s.push_back({u, start + u * chord + p.side * lateral, false});
+                // A zigzag is one path movement whose shape turns (Brentari 1998: a path
+                // feature of one movement; Liddell & Johnson 1989: no hold inside a movement
+                // segment), so its corners are via points the hand turns through without a
+                // hold. The turns stay under 90° (cos² slows the hand to ~1/3 of its chord
+                // speed, sampleTrack) — a sharper one would be a reversal, which stops.
+                for (int k = 0; k <= kZigzagCorners + 1; ++k) {
+                    const double u = static_cast<double>(k) / (kZigzagCorners + 1);
+                    const bool corner = k > 0 && k <= kZigzagCorners;
+                    const double lateral = corner ? (k % 2 ? 1.0 : -1.0) * kZigzagCornerWidth * length : 0.0;
+                    s.push_back({u, start + u * chord + p.side * lateral, corner && length > 0.0});
                 }
                 break;
             }
@@ -270,13 +293,16 @@ private:
             const int steps = 2 * p.localCount;
             for (int k = 0; k <= steps; ++k) path.push_back({t0 + p.seconds * k / steps, start, static_cast<double>(k) / steps, false});
         }
-        const std::optional<HandPose> base = n_.hands == HandRelation::Base ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
-        const std::string baseShape = n_.hands == HandRelation::Base ? baseShapeFrom(static_cast<std::size_t>(part_)) : "";
+        const HandRelation relation = p.hands;
+        const std::optional<HandPose> base = relation == HandRelation::Base ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
+        const std::string baseShape = relation == HandRelation::Base ? baseShapeFrom(static_cast<std::size_t>(part_)) : "";
+        if (out_.hands.size() == 2 && relation == HandRelation::One) holds_.emplace_back(t0, t0 + p.seconds);
         for (std::size_t k = 0; k < path.size(); ++k) {
             const Key& key0 = path[k];
             for (int h = 0; h < static_cast<int>(out_.hands.size()); ++h) {
+                if (h == 1 && relation == HandRelation::One) continue;  // holdLeftInOneHandedParts
                 // Alternating: the left hand is half a cycle behind (the stroke's other end).
-                const bool opposite = h == 1 && n_.hands == HandRelation::Alternating;
+                const bool opposite = h == 1 && relation == HandRelation::Alternating;
                 double u = key0.u;
                 glm::dvec3 position = key0.position;
                 if (opposite && !oscillates) {
@@ -289,11 +315,11 @@ private:
                 std::string shape = handshapeAt(p, u);
                 if (oscillates) applyLocal(p, k, opposite, start, pose, shape);
                 if (h == 1) {
-                    if (n_.hands == HandRelation::Base) {
+                    if (relation == HandRelation::Base) {
                         key(h, key0.t, *base, baseShape, false);
                         continue;
                     }
-                    if (n_.hands == HandRelation::Symmetric) {
+                    if (relation == HandRelation::Symmetric) {
                         // Parallel: the same displacement, from the mirrored start.
                         pose.positionMm = mirror(start) + (pose.positionMm - start);
                         pose.orientation = mirror(pose.orientation);
@@ -303,6 +329,27 @@ private:
                     }
                 }
                 key(h, key0.t, pose, shape, key0.via);
+            }
+        }
+    }
+
+    // In a one-handed part of a two-handed sign the left hand holds still: where the previous
+    // part left it, or (before any) where the next part starts it. Its keys are added at the
+    // part's start and end, in time order.
+    void holdLeftInOneHandedParts() {
+        std::vector<VerbKeyframe>& keys = out_.keyframes[1];
+        std::vector<bool>& flags = out_.passThrough[1];
+        if (keys.empty()) return;  // no part moves it (cannot happen: twoHanded() says one does)
+        for (const auto& [from, to] : holds_) {
+            for (const double t : {from, to}) {
+                const auto at = std::lower_bound(keys.begin(), keys.end(), t,
+                                                 [](const VerbKeyframe& k, double v) { return k.timeSeconds < v - 1e-9; });
+                if (at != keys.end() && std::abs(at->timeSeconds - t) <= 1e-9) continue;
+                VerbKeyframe held = at == keys.begin() ? *at : *(at - 1);
+                held.timeSeconds = t;
+                const auto index = at - keys.begin();
+                keys.insert(at, held);
+                flags.insert(flags.begin() + index, false);
             }
         }
     }
@@ -356,6 +403,7 @@ private:
     std::string pointer_, partPointer_;
     int part_ = 0;
     CompiledNotation out_;
+    std::vector<std::pair<double, double>> holds_;  // one-handed parts of a two-handed sign
 };
 
 }  // namespace

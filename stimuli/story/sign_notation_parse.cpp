@@ -36,13 +36,7 @@ public:
         if (!n.is_object()) fail(p, "expected {\"hands\": ..., \"parts\": [...], \"aslLex\": {...}}");
         only(n, p, {"hands", "parts", "aslLex", "about"});
         SignNotation out;
-        const std::string hands = text(n, p, "hands", "one");
-        static const std::map<std::string, HandRelation> relations{{"one", HandRelation::One},
-                                                                   {"symmetric", HandRelation::Symmetric},
-                                                                   {"mirrored", HandRelation::Mirrored},
-                                                                   {"alternating", HandRelation::Alternating},
-                                                                   {"base", HandRelation::Base}};
-        out.hands = choose(relations, hands, p + "/hands");
+        out.hands = relation(n, p, HandRelation::One);
         if (!n.contains("parts") || !n["parts"].is_array() || n["parts"].empty() || n["parts"].size() > 4)
             fail(p + "/parts", "expected 1 to 4 parts (a compound has one per sign it joins)");
         for (std::size_t i = 0; i < n["parts"].size(); ++i)
@@ -52,6 +46,16 @@ public:
     }
 
 private:
+    HandRelation relation(const json& object, const std::string& p, HandRelation fallback) const {
+        if (!object.contains("hands")) return fallback;
+        static const std::map<std::string, HandRelation> relations{{"one", HandRelation::One},
+                                                                   {"symmetric", HandRelation::Symmetric},
+                                                                   {"mirrored", HandRelation::Mirrored},
+                                                                   {"alternating", HandRelation::Alternating},
+                                                                   {"base", HandRelation::Base}};
+        return choose(relations, text(object, p, "hands", ""), p + "/hands");
+    }
+
     const json& at(const std::string& pointer) const { return source_.root.at(json::json_pointer(pointer)); }
     [[noreturn]] void fail(const std::string& pointer, const std::string& message) const { source_.failAt(pointer, message); }
 
@@ -153,12 +157,14 @@ private:
             fail(p + "/" + palmKey, "the palm cannot face where the fingers point (they are nearly parallel)");
     }
 
-    NotationPart readPart(const json& part, const std::string& p, HandRelation relation, bool first) {
+    NotationPart readPart(const json& part, const std::string& p, HandRelation signRelation, bool first) {
         if (!part.is_object()) fail(p, "a part is an object {\"seconds\": ..., \"handshape\": ..., \"at\": ...}");
-        only(part, p, {"seconds", "transition", "handshape", "endHandshape", "fingers", "palm", "endFingers", "endPalm", "at",
+        only(part, p, {"hands", "seconds", "transition", "handshape", "endHandshape", "fingers", "palm", "endFingers", "endPalm", "at",
                        "offset", "touch", "path", "local", "repeat", "base", "contact", "about"});
         NotationPart out;
         out.line = source_.lineAt(p);
+        out.hands = relation(part, p, signRelation);
+        const HandRelation relation = out.hands;
         if (!part.contains("seconds")) fail(p + "/seconds", "give the part's citation time in seconds");
         out.seconds = number(part, p, "seconds", kPartSeconds, 0.0);
         out.transitionSeconds = number(part, p, "transition", kTransitionSeconds, first ? 0.0 : 0.15);
@@ -202,7 +208,7 @@ private:
             out.baseAt = place(b, p + "/base", "at", "offset");
             if (out.baseAt.onOtherHand()) fail(p + "/base/at", "the base hand is placed on the body or in neutral space");
         } else if (part.contains("base")) {
-            fail(p + "/base", "only a sign with \"hands\": \"base\" has a base hand");
+            fail(p + "/base", "only a part with \"hands\": \"base\" (its own or the sign's) has a base hand");
         }
         return finishPart(part, p, out);
     }
