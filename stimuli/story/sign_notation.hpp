@@ -86,6 +86,14 @@ struct NotationPart {
     std::vector<NotationContact> contacts;
 };
 
+// Whether the part's local movement oscillates over a still hand: a wiggle, twist, nod or rub,
+// or an open-close repeated ("count" 2 or more: BOY, NO), which closes and opens again.
+inline bool oscillatesLocally(const NotationPart& p) {
+    if (p.local == LocalMovement::OpenClose) return p.localCount > 1;
+    return p.localCount > 0 && (p.local == LocalMovement::Wiggle || p.local == LocalMovement::Twist ||
+                                p.local == LocalMovement::Nod || p.local == LocalMovement::Rub);
+}
+
 // An ASL-LEX 2.0 code of one part (morpheme): its columns' values as ASL-LEX writes them.
 struct AslLexCode {
     std::string handshape;      // Handshape.2.0 ("open_b")

@@ -136,12 +136,14 @@ std::vector<AslLexCode> deriveAslLexCode(const SignNotation& n, const HandshapeL
             case PathShape::Circle: c.movement = "Circular"; break;
             case PathShape::Zigzag: c.movement = "Z-shaped"; break;
         }
-        const bool oscillates = p.local == LocalMovement::Wiggle || p.local == LocalMovement::Twist ||
-                                p.local == LocalMovement::Nod || p.local == LocalMovement::Rub;
-        c.repeated = p.repeat > 1 || (oscillates && p.localCount > 1) ? 1 : 0;
+        c.repeated = p.repeat > 1 || (oscillatesLocally(p) && p.localCount > 1) ? 1 : 0;
         // ASL-LEX codes where the hand is at onset; a sign that touches, where it touches.
-        const auto [major, minor] = p.contacts.empty() ? aslLexLocation(p.at.name, glm::length(p.at.offsetMm))
-                                                       : aslLexLocation(p.contacts.front().at, glm::length(p.contacts.front().offsetMm));
+        // Hands that touch each other without a base hand (MORE, FAMILY) touch in neutral
+        // space, as ASL-LEX codes them.
+        const bool handsMeet = !p.contacts.empty() && p.hands != HandRelation::Base && p.contacts.front().at.rfind("hand:", 0) == 0;
+        const auto [major, minor] = handsMeet         ? std::pair<std::string, std::string>{"Neutral", "Neutral"}
+                                    : p.contacts.empty() ? aslLexLocation(p.at.name, glm::length(p.at.offsetMm))
+                                                         : aslLexLocation(p.contacts.front().at, glm::length(p.contacts.front().offsetMm));
         c.majorLocation = major;
         c.minorLocation = minor;
         c.contact = p.contacts.empty() ? 0 : 1;
@@ -240,9 +242,7 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         add("place" + part, major == derived[i].majorLocation && minor == derived[i].minorLocation,
             major + "/" + minor + " (nearest: " + nearest + format(", %.0f mm)", best));
         // Repetitions: returns to the first stroke's end.
-        const bool oscillates = p.localCount > 0 && p.path == PathShape::None &&
-                                (p.local == LocalMovement::Wiggle || p.local == LocalMovement::Twist || p.local == LocalMovement::Nod ||
-                                 p.local == LocalMovement::Rub);
+        const bool oscillates = oscillatesLocally(p) && p.path == PathShape::None;
         int visits = 0;
         // A circle's stroke ends where it starts: the hand must leave it first.
         bool armed = p.path != PathShape::Circle;

@@ -136,6 +136,20 @@ private:
     // A place in signing space: a body location, or a point of the base hand in this part.
     glm::dvec3 resolve(const NotationPlace& place, const std::string& field) const {
         if (!place.onOtherHand()) return body(place, field);
+        const NotationPart& part = n_.parts[static_cast<std::size_t>(part_)];
+        if (part.hands == HandRelation::Mirrored || part.hands == HandRelation::Symmetric) {
+            // Mirrored hands meet on the midline, where each hand's point is the other's mirror
+            // image (FAMILY, MORE): "hand:P" is the midline at the height and depth of
+            // "neutral" plus the offset, whose x keeps the point that far from the midline. The
+            // right hand's touching point is put there, so it must be P itself.
+            if (place.name != "hand:" + part.touch)
+                source_.failAt(field, "mirrored hands meet at the same point of each hand: with \"touch\": \"" + part.touch +
+                                          "\" the place is \"hand:" + part.touch + "\"");
+            NotationPlace neutral{"neutral", glm::dvec3(0.0)};
+            glm::dvec3 at = body(neutral, field) + place.offsetMm;
+            at.x = place.offsetMm.x;
+            return at;
+        }
         const bool isBase = n_.parts[static_cast<std::size_t>(part_)].hands == HandRelation::Base;
         const std::optional<HandPose> base = isBase ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
         if (!base) source_.failAt(field, "a place on the other hand needs \"hands\": \"base\" and the part's base hand");
@@ -286,11 +300,11 @@ private:
             now += tr;
         }
         // Local movement keys over a still hand (the parser allows oscillations only without a path).
-        const bool oscillates = p.localCount > 0 && (p.local == LocalMovement::Wiggle || p.local == LocalMovement::Twist ||
-                                                     p.local == LocalMovement::Nod || p.local == LocalMovement::Rub);
+        const bool oscillates = oscillatesLocally(p);
         if (oscillates && p.path == PathShape::None) {
             path.clear();
-            const int steps = 2 * p.localCount;
+            // A repeated open-close ends in its end handshape, as one open-close does: 2n − 1 changes.
+            const int steps = p.local == LocalMovement::OpenClose ? 2 * p.localCount - 1 : 2 * p.localCount;
             for (int k = 0; k <= steps; ++k) path.push_back({t0 + p.seconds * k / steps, start, static_cast<double>(k) / steps, false});
         }
         const HandRelation relation = p.hands;
@@ -378,6 +392,7 @@ private:
         const double angle = p.localDegrees * kPi / 180.0;
         switch (p.local) {
             case LocalMovement::Wiggle: shape = odd ? p.localWith : p.handshape; break;
+            case LocalMovement::OpenClose: shape = odd ? p.endHandshape : p.handshape; break;
             case LocalMovement::Twist:
                 // About the fingers' axis, half the angle to each side of the described orientation.
                 pose.orientation = glm::angleAxis((odd ? 0.5 : -0.5) * angle, fingersDirection(pose.orientation)) * pose.orientation;

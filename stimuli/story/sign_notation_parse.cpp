@@ -297,6 +297,8 @@ private:
                                 out.local == LocalMovement::Nod || out.local == LocalMovement::Rub;
         out.localCount = whole(local, p, "count", 1, 12, oscillates ? 2 : 1);
         out.localDegrees = number(local, p, "degrees", kDegrees, out.local == LocalMovement::Nod ? 30.0 : 60.0);
+        if (out.local == LocalMovement::OpenClose && out.localCount > 1 && out.path != PathShape::None)
+            fail(p + "/count", "a repeated open-close is a local movement over a still hand: give no path, or repeat the path");
         if (out.local == LocalMovement::Wiggle) out.localWith = shape(local, p, "with", true);
         else if (local.contains("with")) fail(p + "/with", "only a wiggle alternates with another handshape");
         if ((out.local == LocalMovement::Flick || out.local == LocalMovement::Bend || out.local == LocalMovement::OpenClose) &&

@@ -155,5 +155,56 @@ TEST(SignNotationParts, EachPartKeepsItsOwnRelation) {
     }
 }
 
+// Limit 5: mirrored hands touch each other (MORE, FAMILY): they meet on the midline, each
+// hand's point the other's mirror image, in neutral space as ASL-LEX codes it.
+TEST(SignNotationParts, MirroredHandsMeetEachOtherOnTheMidline) {
+    const Lexicon lexicon = parse(lexiconWith(R"({"hands": "mirrored", "parts": [{"seconds": 0.6, "handshape": "flat-O",
+        "fingers": "left", "palm": "back", "at": "neutral", "offset": [40, 60, -60], "touch": "fingertips",
+        "path": {"shape": "straight", "to": "hand:fingertips", "toOffset": [0, 60, -60]},
+        "repeat": {"count": 2, "return": "lifted", "lift": "right"},
+        "contact": [{"when": "end", "at": "hand:fingertips"}]}]})"));
+    const LexiconSign& sign = lexicon.signs.front();
+    const std::vector<NotationCheck> checks = checkSignNotation(sign, lexicon, shapes(), model());
+    int reached = 0;
+    for (const NotationCheck& c : checks) {
+        if (c.name.rfind("contact ", 0) != 0) continue;
+        ++reached;
+        EXPECT_TRUE(c.ok) << c.name << ": " << c.detail;
+    }
+    EXPECT_EQ(reached, 2);  // one touch per repetition
+    for (const char* name : {"apart between contacts", "hands mirrored", "repetitions"}) {
+        ASSERT_NE(findCheck(checks, name), nullptr) << name;
+        EXPECT_TRUE(findCheck(checks, name)->ok) << name << ": " << findCheck(checks, name)->detail;
+    }
+    const std::vector<AslLexCode> code = deriveAslLexCode(*sign.notation, shapes());
+    EXPECT_EQ(code[0].majorLocation, "Neutral");
+    EXPECT_EQ(code[0].contact, 1);
+    // The touching point must be the point met: the other hand's palm is no mirror image of it.
+    EXPECT_THROW(parse(lexiconWith(R"({"hands": "mirrored", "parts": [{"seconds": 0.6, "handshape": "flat-O",
+        "fingers": "left", "palm": "back", "at": "hand:palm", "touch": "fingertips"}]})")), InputError);
+}
+
+// Limit 6: an open-close repeats over a still hand (BOY, NO), ending in its end handshape.
+TEST(SignNotationParts, AnOpenCloseRepeatsItsCount) {
+    const Lexicon lexicon = parse(lexiconWith(R"({"parts": [{"seconds": 0.45, "handshape": "flat-O", "endHandshape": "bent-B",
+        "fingers": "forward", "palm": "down", "at": "chin", "offset": [0, 0, 60], "local": {"kind": "open-close", "count": 3}}]})"));
+    const LexiconSign& sign = lexicon.signs.front();
+    const std::vector<VerbKeyframe>& keys = sign.keyframes.front();
+    ASSERT_EQ(keys.size(), 6u);  // 2 × 3 − 1 changes
+    for (std::size_t k = 0; k < keys.size(); ++k) EXPECT_EQ(keys[k].handshape, k % 2 ? "bent-B" : "flat-O") << k;
+    const std::vector<NotationCheck> checks = checkSignNotation(sign, lexicon, shapes(), model());
+    EXPECT_TRUE(findCheck(checks, "repetitions")->ok) << findCheck(checks, "repetitions")->detail;
+    EXPECT_EQ(deriveAslLexCode(*sign.notation, shapes())[0].repeated, 1);
+    // With a path it would be two movements at once: refused, at its field.
+    try {
+        parse(lexiconWith(R"({"parts": [{"seconds": 0.45, "handshape": "flat-O", "endHandshape": "bent-B",
+            "fingers": "forward", "palm": "down", "at": "chin", "path": {"shape": "straight", "direction": "down", "size": 50},
+            "local": {"kind": "open-close", "count": 2}}]})"));
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.field(), "/signs/0/notation/parts/0/local/count");
+    }
+}
+
 }  // namespace
 }  // namespace signstim::stimuli
