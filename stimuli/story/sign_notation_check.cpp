@@ -106,7 +106,10 @@ std::pair<std::string, std::string> aslLexLocation(const std::string& place, dou
         {"waist", "Body", "Waist"},            {"hips", "Body", "Hips"},          {"a-thigh", "Body", "Hips"},
         {"upper-arm", "Arm", "UpperArm"},      {"hand:palm", "Hand", "Palm"},     {"hand:back", "Hand", "PalmBack"},
         {"hand:heel", "Hand", "Heel"},         {"hand:radial", "Hand", "FingerRadial"}, {"hand:ulnar", "Hand", "FingerUlnar"},
-        {"hand:", "Hand", "FingerTip"},        {"arm:wrist", "Arm", "WristBack"}, {"arm:forearm", "Arm", "ForearmBack"},
+        {"hand:finger-back", "Hand", "FingerBack"}, {"hand:finger-front", "Hand", "FingerFront"},
+        {"hand:", "Hand", "FingerTip"},        {"arm:wrist-front", "Arm", "WristFront"}, {"arm:wrist", "Arm", "WristBack"},
+        {"arm:forearm-front", "Arm", "ForearmFront"}, {"arm:forearm", "Arm", "ForearmBack"},
+        // ASL-LEX 2.0 has no ElbowFront: it codes the elbow as ElbowBack, front or back.
         {"arm:elbow", "Arm", "ElbowBack"}};
     for (const auto& [prefix, major, minor] : table) {
         if (place.rfind(prefix, 0) != 0) continue;
@@ -233,8 +236,9 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
             if (glm::distance(point, touch) < best) best = glm::distance(point, touch), nearest = name;
         if (p.hands == HandRelation::Base && !p.baseHandshape.empty())
             for (const char* name : {"hand:palm", "hand:back", "hand:heel", "hand:radial", "hand:ulnar", "hand:fingertips",
-                                     "hand:thumb", "hand:index", "hand:middle", "hand:ring", "hand:little", "arm:wrist",
-                                     "arm:forearm"}) {
+                                     "hand:thumb", "hand:index", "hand:middle", "hand:ring", "hand:little",
+                                     "hand:finger-back", "hand:finger-front", "arm:wrist", "arm:wrist-front", "arm:forearm",
+                                     "arm:forearm-front", "arm:elbow", "arm:elbow-front"}) {
                 const double d = glm::distance(otherHandPoint(placeTime, name), touch);
                 if (d < best) best = d, nearest = name;
             }

@@ -427,13 +427,26 @@ const std::vector<std::string>& handPointNames() {
     static const std::vector<std::string> names{"base",   "palm",   "knuckles", "thumb-tip", "index-tip", "middle-tip",
                                                 "ring-tip", "little-tip", "fingertips", "back", "heel", "radial",
                                                 "ulnar",  "thumb",  "index",    "middle",    "ring",      "little",
-                                                "wrist",  "forearm", "elbow"};
+                                                "finger-back", "finger-front", "wrist",  "wrist-front", "forearm",
+                                                "forearm-front", "elbow", "elbow-front"};
     return names;
 }
 
 std::optional<glm::dvec3> handPointMm(const hand::HandModel& model, const hand::HandControls& controls, hand::Side side,
                                       const std::string& name) {
     if (std::optional<glm::dvec3> p = touchPointMm(model, controls, side, name)) return p;
+    if (name == "finger-back" || name == "finger-front") {
+        // The middle finger halfway from its knuckle to its tip, on its back or its pad: [D] 8 mm
+        // from the bone line, half a finger's thickness (follows the finger as it bends).
+        const std::optional<glm::dvec3> k = touchPointMm(model, controls, hand::Side::Right, "knuckles");
+        const std::optional<glm::dvec3> t = touchPointMm(model, controls, hand::Side::Right, "middle-tip");
+        if (!k || !t) return std::nullopt;
+        const float palmar = hand::palmarSurfaceXMm(model, 0.5f * hand::palmKnuckleZMm(model));
+        const double toPalm = palmar > model.dimensions.palmCentreXMm ? 1.0 : -1.0;  // the palm's side along x
+        glm::dvec3 p = 0.5 * (*k + *t);
+        p.x += (name == "finger-front" ? 8.0 : -8.0) * toPalm;
+        return side == hand::Side::Right ? p : glm::dvec3(hand::mirrorToLeft(glm::vec3(p)));
+    }
     static const std::vector<std::string> digits{"thumb", "index", "middle", "ring", "little"};
     for (std::size_t d = 0; d < digits.size(); ++d)
         if (name == digits[d]) return touchPointMm(model, controls, side, d == 0 ? "thumb-tip" : digits[d] + "-tip");
@@ -447,8 +460,12 @@ std::optional<glm::dvec3> handPointMm(const hand::HandModel& model, const hand::
     // [D] Along a straight forearm: the wrist's back 20 mm behind the palm frame's origin, the
     // middle of the forearm's back 120 mm, the elbow 260 mm (the default signer's forearm).
     else if (name == "wrist") p = {2.0f * dim.palmCentreXMm - hand::palmarSurfaceXMm(model, 0.0f), 0.0f, -20.0f};
+    else if (name == "wrist-front") p = {hand::palmarSurfaceXMm(model, 0.0f), 0.0f, -20.0f};
     else if (name == "forearm") p = {-20.0f, 0.0f, -120.0f};
+    // [D] The forearm's palm side and the crook of the elbow, 40 mm across from their backs.
+    else if (name == "forearm-front") p = {20.0f, 0.0f, -120.0f};
     else if (name == "elbow") p = {-20.0f, 0.0f, -260.0f};
+    else if (name == "elbow-front") p = {20.0f, 0.0f, -260.0f};
     else return std::nullopt;
     return glm::dvec3(side == hand::Side::Right ? p : hand::mirrorToLeft(p));
 }

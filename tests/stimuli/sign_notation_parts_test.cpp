@@ -206,5 +206,29 @@ TEST(SignNotationParts, AnOpenCloseRepeatsItsCount) {
     }
 }
 
+// Limit 7: the wrist's front, the elbow's front, the back of the fingers and the clavicle are
+// places, found by the place check and mapped to ASL-LEX 2.0's minor locations.
+TEST(SignNotationParts, TheNewPlacesAreFoundAndCodedAsAslLexCodesThem) {
+    for (const auto& [place, minor] : std::vector<std::pair<std::string, std::string>>{
+             {"arm:wrist-front", "WristFront"}, {"hand:finger-back", "FingerBack"}, {"hand:finger-front", "FingerFront"}}) {
+        const Lexicon lexicon = parse(lexiconWith(R"({"hands": "base", "parts": [{"seconds": 0.5, "handshape": "1",
+            "fingers": "forward", "palm": "down", "at": ")" + place + R"(", "touch": "index-tip",
+            "base": {"handshape": "B", "fingers": "right", "palm": "up", "at": "neutral"},
+            "contact": [{"when": "start"}]}]})"));
+        const std::vector<NotationCheck> checks = checkSignNotation(lexicon.signs.front(), lexicon, shapes(), model());
+        const NotationCheck* found = findCheck(checks, "place");
+        ASSERT_NE(found, nullptr);
+        EXPECT_TRUE(found->ok) << place << ": " << found->detail;
+        EXPECT_NE(found->detail.find(minor), std::string::npos) << place << ": " << found->detail;
+        EXPECT_TRUE(findCheck(checks, "contact 1")->ok) << place << ": " << findCheck(checks, "contact 1")->detail;
+    }
+    EXPECT_EQ(aslLexLocation("arm:elbow-front", 0.0).second, "ElbowBack");  // ASL-LEX 2.0 has no ElbowFront
+    const Lexicon shipped = loadLexicon(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/lexicon", shapes(), model());
+    for (const char* side : {"clavicle-right", "clavicle-left"}) {
+        ASSERT_TRUE(shipped.locations.count(side)) << side;
+        EXPECT_EQ(aslLexLocation(side, 0.0), (std::pair<std::string, std::string>{"Body", "Clavicle"}));
+    }
+}
+
 }  // namespace
 }  // namespace signstim::stimuli
