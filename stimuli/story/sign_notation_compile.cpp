@@ -136,15 +136,12 @@ private:
     // A place in signing space: a body location, or a point of the base hand in this part.
     glm::dvec3 resolve(const NotationPlace& place, const std::string& field) const {
         if (!place.onOtherHand()) return body(place, field);
-        const NotationPart& part = n_.parts[static_cast<std::size_t>(part_)];
-        if (part.hands == HandRelation::Mirrored || part.hands == HandRelation::Symmetric) {
+        if (const NotationPart& part = n_.parts[static_cast<std::size_t>(part_)]; part.hands == HandRelation::Mirrored || part.hands == HandRelation::Symmetric) {
             // Mirrored hands meet on the midline, where each hand's point is the other's mirror
-            // image (FAMILY, MORE): "hand:P" is the midline at the height and depth of
-            // "neutral" plus the offset, whose x keeps the point that far from the midline. The
-            // right hand's touching point is put there, so it must be P itself.
-            if (place.name != "hand:" + part.touch)
-                source_.failAt(field, "mirrored hands meet at the same point of each hand: with \"touch\": \"" + part.touch +
-                                          "\" the place is \"hand:" + part.touch + "\"");
+            // image (MORE; FAMILY's thumbs, then little fingers): "hand:P" is the midline at the
+            // height and depth of "neutral" plus the offset, whose x keeps the point that far
+            // from the midline. The right hand's point P is put there (compilePart), the left's
+            // mirrors it.
             NotationPlace neutral{"neutral", glm::dvec3(0.0)};
             glm::dvec3 at = body(neutral, field) + place.offsetMm;
             at.x = place.offsetMm.x;
@@ -241,8 +238,16 @@ private:
     void compilePart(const NotationPart& p, double t0) {
         const glm::dquat q0 = orientationFromFingersPalm(p.fingers, p.palm);
         const glm::dquat q1 = p.endFingers ? orientationFromFingersPalm(*p.endFingers, *p.endPalm) : q0;
-        const glm::dvec3 startTouch = point(p.handshape, hand::Side::Right, p.touch, partPointer_ + "/touch");
-        const glm::dvec3 endTouch = point(p.endHandshape, hand::Side::Right, p.touch, partPointer_ + "/touch");
+        // Where mirrored hands meet (resolve), the point that meets is the place's own.
+        const bool meet = p.hands == HandRelation::Mirrored || p.hands == HandRelation::Symmetric;
+        const auto meets = [&](const NotationPlace& place) { return meet && place.name.rfind("hand:", 0) == 0; };
+        const auto touchAt = [&](const std::string& shape, const NotationPlace& place, const std::string& field) {
+            return meets(place) ? point(shape, hand::Side::Right, place.name.substr(5), partPointer_ + field)
+                                : point(shape, hand::Side::Right, p.touch, partPointer_ + "/touch");
+        };
+        const glm::dvec3 startTouch = touchAt(p.handshape, p.at, "/at");
+        const glm::dvec3 endTouch = p.to ? touchAt(p.endHandshape, *p.to, "/path/to")
+                                         : point(p.endHandshape, hand::Side::Right, p.touch, partPointer_ + "/touch");
         const glm::dvec3 start = palmOriginForTouch(resolve(p.at, partPointer_ + "/at"), q0, startTouch);
         glm::dvec3 end = start;
         if (p.to) end = palmOriginForTouch(resolve(*p.to, partPointer_ + "/path/to"), q1, endTouch);

@@ -179,9 +179,17 @@ TEST(SignNotationParts, MirroredHandsMeetEachOtherOnTheMidline) {
     const std::vector<AslLexCode> code = deriveAslLexCode(*sign.notation, shapes());
     EXPECT_EQ(code[0].majorLocation, "Neutral");
     EXPECT_EQ(code[0].contact, 1);
-    // The touching point must be the point met: the other hand's palm is no mirror image of it.
-    EXPECT_THROW(parse(lexiconWith(R"({"hands": "mirrored", "parts": [{"seconds": 0.6, "handshape": "flat-O",
-        "fingers": "left", "palm": "back", "at": "hand:palm", "touch": "fingertips"}]})")), InputError);
+    // The place names the point that meets, whatever the part's touch: FAMILY's thumbs meet at
+    // the start and its little fingers at the end.
+    const Lexicon family = parse(lexiconWith(R"({"hands": "mirrored", "parts": [{"seconds": 0.5, "handshape": "F",
+        "fingers": "up", "palm": "forward", "endFingers": "up", "endPalm": "back", "at": "hand:thumb", "offset": [0, 40, 0],
+        "path": {"shape": "arc", "to": "hand:little", "toOffset": [0, 40, -80], "side": "right"},
+        "contact": [{"when": "start", "at": "hand:thumb", "by": "thumb"}, {"when": "end", "at": "hand:little", "by": "little"}]}]})"));
+    const std::vector<NotationCheck> familyChecks = checkSignNotation(family.signs.front(), family, shapes(), model());
+    for (const char* name : {"contact 1", "contact 2"}) {
+        ASSERT_NE(findCheck(familyChecks, name), nullptr) << name;
+        EXPECT_TRUE(findCheck(familyChecks, name)->ok) << name << ": " << findCheck(familyChecks, name)->detail;
+    }
 }
 
 // Limit 6: an open-close repeats over a still hand (BOY, NO), ending in its end handshape.
