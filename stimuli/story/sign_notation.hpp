@@ -71,6 +71,7 @@ struct NotationPart {
     glm::dvec3 direction{0.0};        // ... its direction (unit) times
     double sizeMm = 0.0;              // its size (a circle's diameter, an arc's chord)
     glm::dvec3 side{0.0};             // an arc's or zigzag's bulge side; a circle's start side
+    double bulgeMm = 0.0;             // an arc's bulge (0: 15 % of its chord, at least 15 mm)
     glm::dvec3 planeNormal{0.0, 0.0, 1.0};  // circle: the axis it turns about (right hand rule)
     LocalMovement local = LocalMovement::None;
     std::string localWith;  // wiggle: the shape alternated with

@@ -175,7 +175,7 @@ private:
                 if (p.local == LocalMovement::Flick) s.insert(s.begin() + 1, {kFlickShare, start + kFlickShare * chord, length > 0.0});
                 break;
             case PathShape::Arc: {
-                const double bulge = std::max(kArcMinimumBulgeMm, kArcBulge * length);
+                const double bulge = p.bulgeMm > 0.0 ? p.bulgeMm : std::max(kArcMinimumBulgeMm, kArcBulge * length);
                 for (int k = 0; k <= kArcSamples; ++k) {
                     const double u = static_cast<double>(k) / kArcSamples;
                     s.push_back({u, start + u * chord + p.side * bulge * std::sin(kPi * u), k > 0 && k < kArcSamples});

@@ -245,7 +245,7 @@ private:
 
     void readPath(const json& path, const std::string& p, NotationPart& out) const {
         if (!path.is_object()) fail(p, "expected {\"shape\": \"straight\" | \"arc\" | \"circle\" | \"zigzag\" | \"wavy\", ...}");
-        only(path, p, {"shape", "to", "toOffset", "direction", "size", "side", "plane", "turn", "start"});
+        only(path, p, {"shape", "to", "toOffset", "direction", "size", "side", "bulge", "plane", "turn", "start"});
         static const std::map<std::string, PathShape> shapes{{"none", PathShape::None},       {"straight", PathShape::Straight},
                                                              {"arc", PathShape::Arc},         {"circle", PathShape::Circle},
                                                              {"zigzag", PathShape::Zigzag},   {"wavy", PathShape::Wavy}};
@@ -280,6 +280,8 @@ private:
             out.direction = direction(path["direction"], p + "/direction");
             if (out.sizeMm < 1.0) fail(p + "/size", "a path in a direction needs its size in mm");
         }
+        if (path.contains("bulge") && out.path != PathShape::Arc) fail(p + "/bulge", "only an arc has a bulge");
+        out.bulgeMm = number(path, p, "bulge", kSizeMm, 0.0);
         if (path.contains("side")) out.side = direction(path["side"], p + "/side");
         else if (out.path == PathShape::Arc || out.path == PathShape::Zigzag || out.path == PathShape::Wavy)
             fail(p + "/side", "an arc, zigzag or wavy path names the side it bulges to (\"up\", \"left\" ...)");

@@ -183,13 +183,17 @@ TEST(SignNotationParts, MirroredHandsMeetEachOtherOnTheMidline) {
     // the start and its little fingers at the end.
     const Lexicon family = parse(lexiconWith(R"({"hands": "mirrored", "parts": [{"seconds": 0.5, "handshape": "F",
         "fingers": "up", "palm": "forward", "endFingers": "up", "endPalm": "back", "at": "hand:thumb", "offset": [0, 40, 0],
-        "path": {"shape": "arc", "to": "hand:little", "toOffset": [0, 40, -80], "side": "right"},
+        "path": {"shape": "arc", "to": "hand:little", "toOffset": [0, 40, -80], "side": "right", "bulge": 70},
         "contact": [{"when": "start", "at": "hand:thumb", "by": "thumb"}, {"when": "end", "at": "hand:little", "by": "little"}]}]})"));
     const std::vector<NotationCheck> familyChecks = checkSignNotation(family.signs.front(), family, shapes(), model());
     for (const char* name : {"contact 1", "contact 2"}) {
         ASSERT_NE(findCheck(familyChecks, name), nullptr) << name;
         EXPECT_TRUE(findCheck(familyChecks, name)->ok) << name << ": " << findCheck(familyChecks, name)->detail;
     }
+    // Its arc bulges as far as it says (70 mm out to the side at its middle).
+    const std::vector<VerbKeyframe>& keys = family.signs.front().keyframes.front();
+    ASSERT_EQ(keys.size(), 7u);
+    EXPECT_NEAR(keys[3].pose.positionMm.x - 0.5 * (keys.front().pose.positionMm.x + keys.back().pose.positionMm.x), 70.0, 1e-6);
 }
 
 // Limit 6: an open-close repeats over a still hand (BOY, NO), ending in its end handshape.
