@@ -55,6 +55,9 @@ struct NotationContact {
 
 struct NotationPart {
     int line = 0;
+    // The two hands' relation in this part: its own "hands", else the sign's (a compound such
+    // as STUDENT joins a base-hand part to a symmetric one).
+    HandRelation hands = HandRelation::One;
     double seconds = 0.0;  // citation time of the part, its repetitions included
     double transitionSeconds = 0.0;  // from the previous part's end (0 for the first)
     std::string handshape, endHandshape;  // endHandshape == handshape when it does not change
@@ -68,6 +71,7 @@ struct NotationPart {
     glm::dvec3 direction{0.0};        // ... its direction (unit) times
     double sizeMm = 0.0;              // its size (a circle's diameter, an arc's chord)
     glm::dvec3 side{0.0};             // an arc's or zigzag's bulge side; a circle's start side
+    double bulgeMm = 0.0;             // an arc's bulge (0: 15 % of its chord, at least 15 mm)
     glm::dvec3 planeNormal{0.0, 0.0, 1.0};  // circle: the axis it turns about (right hand rule)
     LocalMovement local = LocalMovement::None;
     std::string localWith;  // wiggle: the shape alternated with
@@ -82,6 +86,14 @@ struct NotationPart {
     NotationPlace baseAt;
     std::vector<NotationContact> contacts;
 };
+
+// Whether the part's local movement oscillates over a still hand: a wiggle, twist, nod or rub,
+// or an open-close repeated ("count" 2 or more: BOY, NO), which closes and opens again.
+inline bool oscillatesLocally(const NotationPart& p) {
+    if (p.local == LocalMovement::OpenClose) return p.localCount > 1;
+    return p.localCount > 0 && (p.local == LocalMovement::Wiggle || p.local == LocalMovement::Twist ||
+                                p.local == LocalMovement::Nod || p.local == LocalMovement::Rub);
+}
 
 // An ASL-LEX 2.0 code of one part (morpheme): its columns' values as ASL-LEX writes them.
 struct AslLexCode {
@@ -106,9 +118,16 @@ struct NotationProvenance {
 };
 
 struct SignNotation {
-    HandRelation hands = HandRelation::One;
+    HandRelation hands = HandRelation::One;  // the sign's relation, each part's unless it names its own
     std::vector<NotationPart> parts;
     NotationProvenance provenance;
+    // Whether any part uses the left hand (then the sign has two hands throughout; in a
+    // one-handed part the left hand holds still where it was, or where it is next needed).
+    bool twoHanded() const {
+        for (const NotationPart& p : parts)
+            if (p.hands != HandRelation::One) return true;
+        return hands != HandRelation::One;
+    }
 };
 
 // A contact event of the compiled sign: where the acting hand's point must be, and when.

@@ -106,7 +106,10 @@ std::pair<std::string, std::string> aslLexLocation(const std::string& place, dou
         {"waist", "Body", "Waist"},            {"hips", "Body", "Hips"},          {"a-thigh", "Body", "Hips"},
         {"upper-arm", "Arm", "UpperArm"},      {"hand:palm", "Hand", "Palm"},     {"hand:back", "Hand", "PalmBack"},
         {"hand:heel", "Hand", "Heel"},         {"hand:radial", "Hand", "FingerRadial"}, {"hand:ulnar", "Hand", "FingerUlnar"},
-        {"hand:", "Hand", "FingerTip"},        {"arm:wrist", "Arm", "WristBack"}, {"arm:forearm", "Arm", "ForearmBack"},
+        {"hand:finger-back", "Hand", "FingerBack"}, {"hand:finger-front", "Hand", "FingerFront"},
+        {"hand:", "Hand", "FingerTip"},        {"arm:wrist-front", "Arm", "WristFront"}, {"arm:wrist", "Arm", "WristBack"},
+        {"arm:forearm-front", "Arm", "ForearmFront"}, {"arm:forearm", "Arm", "ForearmBack"},
+        // ASL-LEX 2.0 has no ElbowFront: it codes the elbow as ElbowBack, front or back.
         {"arm:elbow", "Arm", "ElbowBack"}};
     for (const auto& [prefix, major, minor] : table) {
         if (place.rfind(prefix, 0) != 0) continue;
@@ -122,12 +125,12 @@ std::vector<AslLexCode> deriveAslLexCode(const SignNotation& n, const HandshapeL
     for (const NotationPart& p : n.parts) {
         AslLexCode c;
         c.handshape = labelOf(shapes, p.handshape);
-        const bool base = n.hands == HandRelation::Base && !p.baseHandshape.empty();
-        if (n.hands == HandRelation::One || (n.hands == HandRelation::Base && !base)) c.signType = "OneHanded";
+        const bool base = p.hands == HandRelation::Base && !p.baseHandshape.empty();
+        if (p.hands == HandRelation::One || (p.hands == HandRelation::Base && !base)) c.signType = "OneHanded";
         else if (!base) c.signType = "SymmetricalOrAlternating";
         else c.signType = labelOf(shapes, p.baseHandshape) == c.handshape ? "AsymmetricalSameHandshape" : "AsymmetricalDifferentHandshape";
         if (base) c.nondominant = labelOf(shapes, p.baseHandshape);
-        else if (n.hands != HandRelation::One && n.hands != HandRelation::Base) c.nondominant = c.handshape;
+        else if (p.hands != HandRelation::One && p.hands != HandRelation::Base) c.nondominant = c.handshape;
         switch (p.path) {
             case PathShape::None: c.movement = "None"; break;
             case PathShape::Straight: c.movement = "Straight"; break;
@@ -136,12 +139,14 @@ std::vector<AslLexCode> deriveAslLexCode(const SignNotation& n, const HandshapeL
             case PathShape::Circle: c.movement = "Circular"; break;
             case PathShape::Zigzag: c.movement = "Z-shaped"; break;
         }
-        const bool oscillates = p.local == LocalMovement::Wiggle || p.local == LocalMovement::Twist ||
-                                p.local == LocalMovement::Nod || p.local == LocalMovement::Rub;
-        c.repeated = p.repeat > 1 || (oscillates && p.localCount > 1) ? 1 : 0;
+        c.repeated = p.repeat > 1 || (oscillatesLocally(p) && p.localCount > 1) ? 1 : 0;
         // ASL-LEX codes where the hand is at onset; a sign that touches, where it touches.
-        const auto [major, minor] = p.contacts.empty() ? aslLexLocation(p.at.name, glm::length(p.at.offsetMm))
-                                                       : aslLexLocation(p.contacts.front().at, glm::length(p.contacts.front().offsetMm));
+        // Hands that touch each other without a base hand (MORE, FAMILY) touch in neutral
+        // space, as ASL-LEX codes them.
+        const bool handsMeet = !p.contacts.empty() && p.hands != HandRelation::Base && p.contacts.front().at.rfind("hand:", 0) == 0;
+        const auto [major, minor] = handsMeet         ? std::pair<std::string, std::string>{"Neutral", "Neutral"}
+                                    : p.contacts.empty() ? aslLexLocation(p.at.name, glm::length(p.at.offsetMm))
+                                                         : aslLexLocation(p.contacts.front().at, glm::length(p.contacts.front().offsetMm));
         c.majorLocation = major;
         c.minorLocation = minor;
         c.contact = p.contacts.empty() ? 0 : 1;
@@ -229,8 +234,11 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         double best = 1e18;
         for (const auto& [name, point] : lexicon.locations)
             if (glm::distance(point, touch) < best) best = glm::distance(point, touch), nearest = name;
-        if (n.hands == HandRelation::Base && !p.baseHandshape.empty())
-            for (const char* name : {"hand:palm", "hand:back", "hand:heel", "hand:radial", "hand:ulnar", "hand:fingertips", "arm:wrist", "arm:forearm"}) {
+        if (p.hands == HandRelation::Base && !p.baseHandshape.empty())
+            for (const char* name : {"hand:palm", "hand:back", "hand:heel", "hand:radial", "hand:ulnar", "hand:fingertips",
+                                     "hand:thumb", "hand:index", "hand:middle", "hand:ring", "hand:little",
+                                     "hand:finger-back", "hand:finger-front", "arm:wrist", "arm:wrist-front", "arm:forearm",
+                                     "arm:forearm-front", "arm:elbow", "arm:elbow-front"}) {
                 const double d = glm::distance(otherHandPoint(placeTime, name), touch);
                 if (d < best) best = d, nearest = name;
             }
@@ -238,9 +246,7 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         add("place" + part, major == derived[i].majorLocation && minor == derived[i].minorLocation,
             major + "/" + minor + " (nearest: " + nearest + format(", %.0f mm)", best));
         // Repetitions: returns to the first stroke's end.
-        const bool oscillates = p.localCount > 0 && p.path == PathShape::None &&
-                                (p.local == LocalMovement::Wiggle || p.local == LocalMovement::Twist || p.local == LocalMovement::Nod ||
-                                 p.local == LocalMovement::Rub);
+        const bool oscillates = oscillatesLocally(p) && p.path == PathShape::None;
         int visits = 0;
         // A circle's stroke ends where it starts: the hand must leave it first.
         bool armed = p.path != PathShape::Circle;
@@ -321,18 +327,38 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
     }
     // Two hands that never touch stay apart; the relation holds at every sample.
     if (tracks.size() == 2) {
+        // The relation holds inside its own parts' strokes (a compound changes it).
+        bool anyMirrored = false, anyBase = false;
+        for (const NotationPart& p : n.parts) {
+            anyMirrored = anyMirrored || p.hands == HandRelation::Mirrored;
+            anyBase = anyBase || p.hands == HandRelation::Base;
+        }
+        // A part entered from another relation: the hands arrive from places that are no mirror
+        // images, and the pass through the part's first key carries that in (sampleTrack), so
+        // the relation is measured from its second key on.
+        const auto mirroredAt = [&](double t) {
+            for (std::size_t i = 0; i < n.parts.size() && i < sign.strokes.size(); ++i) {
+                if (n.parts[i].hands != HandRelation::Mirrored || t < sign.strokes[i].startSeconds - 1e-9 ||
+                    t > sign.strokes[i].endSeconds + 1e-9)
+                    continue;
+                if (i == 0 || n.parts[i - 1].hands == HandRelation::Mirrored) return true;
+                for (const TimelineKey& key : tracks[0])
+                    if (key.timeSeconds > sign.strokes[i].startSeconds + 1e-9) return t >= key.timeSeconds - 1e-9;
+            }
+            return false;
+        };
         double closest = 1e18, worst = 0.0;
         for (double t = 0.0; t <= total + 1e-9; t += kSampleSeconds) {
             const Sampled r = sampleAt(tracks[0], t), l = sampleAt(tracks[1], t);
             const glm::dvec3 rp = handPointInSpace(r.pose, *handPointMm(model, r.controls, hand::Side::Right, "palm"));
             const glm::dvec3 lp = handPointInSpace(l.pose, *handPointMm(model, l.controls, hand::Side::Left, "palm"));
             closest = std::min(closest, glm::distance(rp, lp));
-            if (n.hands == HandRelation::Mirrored)
+            if (mirroredAt(t))
                 worst = std::max(worst, glm::distance(l.pose.positionMm, glm::dvec3(-r.pose.positionMm.x, r.pose.positionMm.y, r.pose.positionMm.z)));
         }
         if (!sign.contact.hands) add("hands apart", closest >= kHandsApartMm, format("palms at least %.0f mm apart", closest));
-        if (n.hands == HandRelation::Mirrored) add("hands mirrored", worst < 0.5, format("%.2f mm from the mirror image at worst", worst));
-        if (n.hands == HandRelation::Base) {
+        if (anyMirrored) add("hands mirrored", worst < 0.5, format("%.2f mm from the mirror image at worst", worst));
+        if (anyBase) {
             double moved = 0.0;
             for (std::size_t i = 0; i < sign.strokes.size(); ++i)
                 if (!n.parts[i].baseHandshape.empty())
@@ -342,8 +368,9 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
             add("base hand still", moved < 0.5, format("moves %.2f mm", moved));
         }
     }
-    add("hands", static_cast<int>(sign.hands.size()) == (n.hands == HandRelation::One ? 1 : 2),
-        std::to_string(sign.hands.size()) + " (" + toString(n.hands) + ")");
+    std::string relations;
+    for (const NotationPart& p : n.parts) relations += (relations.empty() ? "" : ", ") + toString(p.hands);
+    add("hands", static_cast<int>(sign.hands.size()) == (n.twoHanded() ? 2 : 1), std::to_string(sign.hands.size()) + " (" + relations + ")");
     return checks;
 }
 

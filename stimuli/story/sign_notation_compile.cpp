@@ -22,6 +22,11 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kCircleSamples = 12, kArcSamples = 6, kWavySamples = 12;
 // [D] An arc bulges by 15 % of its chord (at least 15 mm), a zigzag or wave by 15 %.
 constexpr double kArcBulge = 0.15, kArcMinimumBulgeMm = 15.0, kZigzagWidth = 0.15;
+// [D] A zigzag has two corners (a Z), each 12 % of the chord to alternate sides: the turn at a
+// corner is 55° (segments (1/3, 0.12) and (1/3, −0.24) of the chord), under the 90° at which
+// sampleTrack stops the hand.
+constexpr int kZigzagCorners = 2;
+constexpr double kZigzagCornerWidth = 0.12;
 // [D] A lifted return takes 60 % of the stroke's time and clears the surface by 30 % of the
 // stroke's length (at least 15 mm): the quick return of a tap (issue 22: "quick lifted return").
 constexpr double kLiftedReturnTime = 0.6, kLiftedHeight = 0.3, kLiftedMinimumMm = 15.0;
@@ -51,15 +56,17 @@ public:
         : n_(n), locations_(locations), shapes_(shapes), model_(model), source_(source), pointer_(pointer) {}
 
     CompiledNotation compile() {
-        const bool twoHands = n_.hands != HandRelation::One;
+        const bool twoHands = n_.twoHanded();
         out_.hands = twoHands ? std::vector<HandSide>{HandSide::Right, HandSide::Left} : std::vector<HandSide>{HandSide::Right};
         out_.keyframes.resize(out_.hands.size());
         out_.passThrough.resize(out_.hands.size());
-        if (n_.hands == HandRelation::Base) {
-            bool any = false;
-            for (const NotationPart& p : n_.parts) any = any || !p.baseHandshape.empty();
-            if (!any) source_.failAt(pointer_ + "/notation/parts/0/base", "a sign with \"hands\": \"base\" needs a base hand in a part");
+        bool anyBase = false, anyBaseHand = false;
+        for (const NotationPart& p : n_.parts) {
+            anyBase = anyBase || p.hands == HandRelation::Base;
+            anyBaseHand = anyBaseHand || !p.baseHandshape.empty();
         }
+        if (anyBase && !anyBaseHand)
+            source_.failAt(pointer_ + "/notation/parts/0/base", "a part with \"hands\": \"base\" needs a base hand in a part");
         double t = 0.0;
         for (std::size_t i = 0; i < n_.parts.size(); ++i) {
             part_ = static_cast<int>(i);
@@ -68,6 +75,7 @@ public:
             compilePart(n_.parts[i], t);
             t += n_.parts[i].seconds;
         }
+        if (twoHands) holdLeftInOneHandedParts();
         for (const ContactEvent& e : out_.contacts) {
             const bool onHand = e.at.rfind("hand:", 0) == 0 || e.at.rfind("arm:", 0) == 0;
             (onHand ? out_.contact.hands : out_.contact.body) = true;
@@ -88,11 +96,22 @@ private:
         return *p;
     }
 
-    // The base hand's pose in `part` (the next part's where this one has none: it waits there).
+    // The part whose base hand holds in `part`: its own; else the next part's (the base hand
+    // waits where it is needed); else, after the last part with one, the previous part's (the
+    // still hand stays where it was). -1: no part has a base hand.
+    int basePart(std::size_t part) const {
+        for (std::size_t i = part; i < n_.parts.size(); ++i)
+            if (!n_.parts[i].baseHandshape.empty()) return static_cast<int>(i);
+        for (std::size_t i = std::min(part, n_.parts.size()); i-- > 0;)
+            if (!n_.parts[i].baseHandshape.empty()) return static_cast<int>(i);
+        return -1;
+    }
+
+    // The base hand's pose in `part` (basePart).
     std::optional<HandPose> basePose(std::size_t part) const {
-        for (std::size_t i = part; i < n_.parts.size(); ++i) {
-            const NotationPart& p = n_.parts[i];
-            if (p.baseHandshape.empty()) continue;
+        const int i = basePart(part);
+        if (i >= 0) {
+            const NotationPart& p = n_.parts[static_cast<std::size_t>(i)];
             const glm::dquat q = orientationFromFingersPalm(p.baseFingers, p.basePalm);
             const glm::dvec3 palm = point(p.baseHandshape, hand::Side::Left, "palm", "");
             HandPose pose;
@@ -117,7 +136,19 @@ private:
     // A place in signing space: a body location, or a point of the base hand in this part.
     glm::dvec3 resolve(const NotationPlace& place, const std::string& field) const {
         if (!place.onOtherHand()) return body(place, field);
-        const std::optional<HandPose> base = n_.hands == HandRelation::Base ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
+        if (const NotationPart& part = n_.parts[static_cast<std::size_t>(part_)]; part.hands == HandRelation::Mirrored || part.hands == HandRelation::Symmetric) {
+            // Mirrored hands meet on the midline, where each hand's point is the other's mirror
+            // image (MORE; FAMILY's thumbs, then little fingers): "hand:P" is the midline at the
+            // height and depth of "neutral" plus the offset, whose x keeps the point that far
+            // from the midline. The right hand's point P is put there (compilePart), the left's
+            // mirrors it.
+            NotationPlace neutral{"neutral", glm::dvec3(0.0)};
+            glm::dvec3 at = body(neutral, field) + place.offsetMm;
+            at.x = place.offsetMm.x;
+            return at;
+        }
+        const bool isBase = n_.parts[static_cast<std::size_t>(part_)].hands == HandRelation::Base;
+        const std::optional<HandPose> base = isBase ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
         if (!base) source_.failAt(field, "a place on the other hand needs \"hands\": \"base\" and the part's base hand");
         const std::string name = place.name.substr(place.name.find(':') + 1);
         const std::string& shape = n_.parts[static_cast<std::size_t>(part_)].baseHandshape.empty()
@@ -127,9 +158,8 @@ private:
     }
 
     const std::string& baseShapeFrom(std::size_t part) const {
-        for (std::size_t i = part; i < n_.parts.size(); ++i)
-            if (!n_.parts[i].baseHandshape.empty()) return n_.parts[i].baseHandshape;
-        return n_.parts.back().baseHandshape;
+        const int i = basePart(part);
+        return n_.parts[static_cast<std::size_t>(std::max(i, 0))].baseHandshape;
     }
 
     // The stroke's samples from start to end (palm origins).
@@ -145,7 +175,7 @@ private:
                 if (p.local == LocalMovement::Flick) s.insert(s.begin() + 1, {kFlickShare, start + kFlickShare * chord, length > 0.0});
                 break;
             case PathShape::Arc: {
-                const double bulge = std::max(kArcMinimumBulgeMm, kArcBulge * length);
+                const double bulge = p.bulgeMm > 0.0 ? p.bulgeMm : std::max(kArcMinimumBulgeMm, kArcBulge * length);
                 for (int k = 0; k <= kArcSamples; ++k) {
                     const double u = static_cast<double>(k) / kArcSamples;
                     s.push_back({u, start + u * chord + p.side * bulge * std::sin(kPi * u), k > 0 && k < kArcSamples});
@@ -164,12 +194,16 @@ private:
                 break;
             }
             case PathShape::Zigzag: {
-                const int corners = 4;
-                for (int k = 0; k <= corners + 1; ++k) {
-                    const double u = static_cast<double>(k) / (corners + 1);
-                    const double lateral = k == 0 || k == corners + 1 ? 0.0 : (k % 2 ? 1.0 : -1.0) * kZigzagWidth * length;
-                    // Corners: the hand turns sharply there and nearly stops (not via points).
-                    s.push_back({u, start + u * chord + p.side * lateral, false});
+                // A zigzag is one path movement whose shape turns (Brentari 1998: a path
+                // feature of one movement; Liddell & Johnson 1989: no hold inside a movement
+                // segment), so its corners are via points the hand turns through without a
+                // hold. The turns stay under 90° (cos² slows the hand to ~1/3 of its chord
+                // speed, sampleTrack) — a sharper one would be a reversal, which stops.
+                for (int k = 0; k <= kZigzagCorners + 1; ++k) {
+                    const double u = static_cast<double>(k) / (kZigzagCorners + 1);
+                    const bool corner = k > 0 && k <= kZigzagCorners;
+                    const double lateral = corner ? (k % 2 ? 1.0 : -1.0) * kZigzagCornerWidth * length : 0.0;
+                    s.push_back({u, start + u * chord + p.side * lateral, corner && length > 0.0});
                 }
                 break;
             }
@@ -204,8 +238,16 @@ private:
     void compilePart(const NotationPart& p, double t0) {
         const glm::dquat q0 = orientationFromFingersPalm(p.fingers, p.palm);
         const glm::dquat q1 = p.endFingers ? orientationFromFingersPalm(*p.endFingers, *p.endPalm) : q0;
-        const glm::dvec3 startTouch = point(p.handshape, hand::Side::Right, p.touch, partPointer_ + "/touch");
-        const glm::dvec3 endTouch = point(p.endHandshape, hand::Side::Right, p.touch, partPointer_ + "/touch");
+        // Where mirrored hands meet (resolve), the point that meets is the place's own.
+        const bool meet = p.hands == HandRelation::Mirrored || p.hands == HandRelation::Symmetric;
+        const auto meets = [&](const NotationPlace& place) { return meet && place.name.rfind("hand:", 0) == 0; };
+        const auto touchAt = [&](const std::string& shape, const NotationPlace& place, const std::string& field) {
+            return meets(place) ? point(shape, hand::Side::Right, place.name.substr(5), partPointer_ + field)
+                                : point(shape, hand::Side::Right, p.touch, partPointer_ + "/touch");
+        };
+        const glm::dvec3 startTouch = touchAt(p.handshape, p.at, "/at");
+        const glm::dvec3 endTouch = p.to ? touchAt(p.endHandshape, *p.to, "/path/to")
+                                         : point(p.endHandshape, hand::Side::Right, p.touch, partPointer_ + "/touch");
         const glm::dvec3 start = palmOriginForTouch(resolve(p.at, partPointer_ + "/at"), q0, startTouch);
         glm::dvec3 end = start;
         if (p.to) end = palmOriginForTouch(resolve(*p.to, partPointer_ + "/path/to"), q1, endTouch);
@@ -263,20 +305,23 @@ private:
             now += tr;
         }
         // Local movement keys over a still hand (the parser allows oscillations only without a path).
-        const bool oscillates = p.localCount > 0 && (p.local == LocalMovement::Wiggle || p.local == LocalMovement::Twist ||
-                                                     p.local == LocalMovement::Nod || p.local == LocalMovement::Rub);
+        const bool oscillates = oscillatesLocally(p);
         if (oscillates && p.path == PathShape::None) {
             path.clear();
-            const int steps = 2 * p.localCount;
+            // A repeated open-close ends in its end handshape, as one open-close does: 2n − 1 changes.
+            const int steps = p.local == LocalMovement::OpenClose ? 2 * p.localCount - 1 : 2 * p.localCount;
             for (int k = 0; k <= steps; ++k) path.push_back({t0 + p.seconds * k / steps, start, static_cast<double>(k) / steps, false});
         }
-        const std::optional<HandPose> base = n_.hands == HandRelation::Base ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
-        const std::string baseShape = n_.hands == HandRelation::Base ? baseShapeFrom(static_cast<std::size_t>(part_)) : "";
+        const HandRelation relation = p.hands;
+        const std::optional<HandPose> base = relation == HandRelation::Base ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
+        const std::string baseShape = relation == HandRelation::Base ? baseShapeFrom(static_cast<std::size_t>(part_)) : "";
+        if (out_.hands.size() == 2 && relation == HandRelation::One) holds_.emplace_back(t0, t0 + p.seconds);
         for (std::size_t k = 0; k < path.size(); ++k) {
             const Key& key0 = path[k];
             for (int h = 0; h < static_cast<int>(out_.hands.size()); ++h) {
+                if (h == 1 && relation == HandRelation::One) continue;  // holdLeftInOneHandedParts
                 // Alternating: the left hand is half a cycle behind (the stroke's other end).
-                const bool opposite = h == 1 && n_.hands == HandRelation::Alternating;
+                const bool opposite = h == 1 && relation == HandRelation::Alternating;
                 double u = key0.u;
                 glm::dvec3 position = key0.position;
                 if (opposite && !oscillates) {
@@ -289,11 +334,11 @@ private:
                 std::string shape = handshapeAt(p, u);
                 if (oscillates) applyLocal(p, k, opposite, start, pose, shape);
                 if (h == 1) {
-                    if (n_.hands == HandRelation::Base) {
+                    if (relation == HandRelation::Base) {
                         key(h, key0.t, *base, baseShape, false);
                         continue;
                     }
-                    if (n_.hands == HandRelation::Symmetric) {
+                    if (relation == HandRelation::Symmetric) {
                         // Parallel: the same displacement, from the mirrored start.
                         pose.positionMm = mirror(start) + (pose.positionMm - start);
                         pose.orientation = mirror(pose.orientation);
@@ -303,6 +348,27 @@ private:
                     }
                 }
                 key(h, key0.t, pose, shape, key0.via);
+            }
+        }
+    }
+
+    // In a one-handed part of a two-handed sign the left hand holds still: where the previous
+    // part left it, or (before any) where the next part starts it. Its keys are added at the
+    // part's start and end, in time order.
+    void holdLeftInOneHandedParts() {
+        std::vector<VerbKeyframe>& keys = out_.keyframes[1];
+        std::vector<bool>& flags = out_.passThrough[1];
+        if (keys.empty()) return;  // no part moves it (cannot happen: twoHanded() says one does)
+        for (const auto& [from, to] : holds_) {
+            for (const double t : {from, to}) {
+                const auto at = std::lower_bound(keys.begin(), keys.end(), t,
+                                                 [](const VerbKeyframe& k, double v) { return k.timeSeconds < v - 1e-9; });
+                if (at != keys.end() && std::abs(at->timeSeconds - t) <= 1e-9) continue;
+                VerbKeyframe held = at == keys.begin() ? *at : *(at - 1);
+                held.timeSeconds = t;
+                const auto index = at - keys.begin();
+                keys.insert(at, held);
+                flags.insert(flags.begin() + index, false);
             }
         }
     }
@@ -331,6 +397,7 @@ private:
         const double angle = p.localDegrees * kPi / 180.0;
         switch (p.local) {
             case LocalMovement::Wiggle: shape = odd ? p.localWith : p.handshape; break;
+            case LocalMovement::OpenClose: shape = odd ? p.endHandshape : p.handshape; break;
             case LocalMovement::Twist:
                 // About the fingers' axis, half the angle to each side of the described orientation.
                 pose.orientation = glm::angleAxis((odd ? 0.5 : -0.5) * angle, fingersDirection(pose.orientation)) * pose.orientation;
@@ -356,6 +423,7 @@ private:
     std::string pointer_, partPointer_;
     int part_ = 0;
     CompiledNotation out_;
+    std::vector<std::pair<double, double>> holds_;  // one-handed parts of a two-handed sign
 };
 
 }  // namespace
@@ -364,13 +432,26 @@ const std::vector<std::string>& handPointNames() {
     static const std::vector<std::string> names{"base",   "palm",   "knuckles", "thumb-tip", "index-tip", "middle-tip",
                                                 "ring-tip", "little-tip", "fingertips", "back", "heel", "radial",
                                                 "ulnar",  "thumb",  "index",    "middle",    "ring",      "little",
-                                                "wrist",  "forearm", "elbow"};
+                                                "finger-back", "finger-front", "wrist",  "wrist-front", "forearm",
+                                                "forearm-front", "elbow", "elbow-front"};
     return names;
 }
 
 std::optional<glm::dvec3> handPointMm(const hand::HandModel& model, const hand::HandControls& controls, hand::Side side,
                                       const std::string& name) {
     if (std::optional<glm::dvec3> p = touchPointMm(model, controls, side, name)) return p;
+    if (name == "finger-back" || name == "finger-front") {
+        // The middle finger halfway from its knuckle to its tip, on its back or its pad: [D] 8 mm
+        // from the bone line, half a finger's thickness (follows the finger as it bends).
+        const std::optional<glm::dvec3> k = touchPointMm(model, controls, hand::Side::Right, "knuckles");
+        const std::optional<glm::dvec3> t = touchPointMm(model, controls, hand::Side::Right, "middle-tip");
+        if (!k || !t) return std::nullopt;
+        const float palmar = hand::palmarSurfaceXMm(model, 0.5f * hand::palmKnuckleZMm(model));
+        const double toPalm = palmar > model.dimensions.palmCentreXMm ? 1.0 : -1.0;  // the palm's side along x
+        glm::dvec3 p = 0.5 * (*k + *t);
+        p.x += (name == "finger-front" ? 8.0 : -8.0) * toPalm;
+        return side == hand::Side::Right ? p : glm::dvec3(hand::mirrorToLeft(glm::vec3(p)));
+    }
     static const std::vector<std::string> digits{"thumb", "index", "middle", "ring", "little"};
     for (std::size_t d = 0; d < digits.size(); ++d)
         if (name == digits[d]) return touchPointMm(model, controls, side, d == 0 ? "thumb-tip" : digits[d] + "-tip");
@@ -384,8 +465,12 @@ std::optional<glm::dvec3> handPointMm(const hand::HandModel& model, const hand::
     // [D] Along a straight forearm: the wrist's back 20 mm behind the palm frame's origin, the
     // middle of the forearm's back 120 mm, the elbow 260 mm (the default signer's forearm).
     else if (name == "wrist") p = {2.0f * dim.palmCentreXMm - hand::palmarSurfaceXMm(model, 0.0f), 0.0f, -20.0f};
+    else if (name == "wrist-front") p = {hand::palmarSurfaceXMm(model, 0.0f), 0.0f, -20.0f};
     else if (name == "forearm") p = {-20.0f, 0.0f, -120.0f};
+    // [D] The forearm's palm side and the crook of the elbow, 40 mm across from their backs.
+    else if (name == "forearm-front") p = {20.0f, 0.0f, -120.0f};
     else if (name == "elbow") p = {-20.0f, 0.0f, -260.0f};
+    else if (name == "elbow-front") p = {20.0f, 0.0f, -260.0f};
     else return std::nullopt;
     return glm::dvec3(side == hand::Side::Right ? p : hand::mirrorToLeft(p));
 }

@@ -36,13 +36,7 @@ public:
         if (!n.is_object()) fail(p, "expected {\"hands\": ..., \"parts\": [...], \"aslLex\": {...}}");
         only(n, p, {"hands", "parts", "aslLex", "about"});
         SignNotation out;
-        const std::string hands = text(n, p, "hands", "one");
-        static const std::map<std::string, HandRelation> relations{{"one", HandRelation::One},
-                                                                   {"symmetric", HandRelation::Symmetric},
-                                                                   {"mirrored", HandRelation::Mirrored},
-                                                                   {"alternating", HandRelation::Alternating},
-                                                                   {"base", HandRelation::Base}};
-        out.hands = choose(relations, hands, p + "/hands");
+        out.hands = relation(n, p, HandRelation::One);
         if (!n.contains("parts") || !n["parts"].is_array() || n["parts"].empty() || n["parts"].size() > 4)
             fail(p + "/parts", "expected 1 to 4 parts (a compound has one per sign it joins)");
         for (std::size_t i = 0; i < n["parts"].size(); ++i)
@@ -52,6 +46,16 @@ public:
     }
 
 private:
+    HandRelation relation(const json& object, const std::string& p, HandRelation fallback) const {
+        if (!object.contains("hands")) return fallback;
+        static const std::map<std::string, HandRelation> relations{{"one", HandRelation::One},
+                                                                   {"symmetric", HandRelation::Symmetric},
+                                                                   {"mirrored", HandRelation::Mirrored},
+                                                                   {"alternating", HandRelation::Alternating},
+                                                                   {"base", HandRelation::Base}};
+        return choose(relations, text(object, p, "hands", ""), p + "/hands");
+    }
+
     const json& at(const std::string& pointer) const { return source_.root.at(json::json_pointer(pointer)); }
     [[noreturn]] void fail(const std::string& pointer, const std::string& message) const { source_.failAt(pointer, message); }
 
@@ -153,12 +157,14 @@ private:
             fail(p + "/" + palmKey, "the palm cannot face where the fingers point (they are nearly parallel)");
     }
 
-    NotationPart readPart(const json& part, const std::string& p, HandRelation relation, bool first) {
+    NotationPart readPart(const json& part, const std::string& p, HandRelation signRelation, bool first) {
         if (!part.is_object()) fail(p, "a part is an object {\"seconds\": ..., \"handshape\": ..., \"at\": ...}");
-        only(part, p, {"seconds", "transition", "handshape", "endHandshape", "fingers", "palm", "endFingers", "endPalm", "at",
+        only(part, p, {"hands", "seconds", "transition", "handshape", "endHandshape", "fingers", "palm", "endFingers", "endPalm", "at",
                        "offset", "touch", "path", "local", "repeat", "base", "contact", "about"});
         NotationPart out;
         out.line = source_.lineAt(p);
+        out.hands = relation(part, p, signRelation);
+        const HandRelation relation = out.hands;
         if (!part.contains("seconds")) fail(p + "/seconds", "give the part's citation time in seconds");
         out.seconds = number(part, p, "seconds", kPartSeconds, 0.0);
         out.transitionSeconds = number(part, p, "transition", kTransitionSeconds, first ? 0.0 : 0.15);
@@ -202,7 +208,7 @@ private:
             out.baseAt = place(b, p + "/base", "at", "offset");
             if (out.baseAt.onOtherHand()) fail(p + "/base/at", "the base hand is placed on the body or in neutral space");
         } else if (part.contains("base")) {
-            fail(p + "/base", "only a sign with \"hands\": \"base\" has a base hand");
+            fail(p + "/base", "only a part with \"hands\": \"base\" (its own or the sign's) has a base hand");
         }
         return finishPart(part, p, out);
     }
@@ -239,7 +245,7 @@ private:
 
     void readPath(const json& path, const std::string& p, NotationPart& out) const {
         if (!path.is_object()) fail(p, "expected {\"shape\": \"straight\" | \"arc\" | \"circle\" | \"zigzag\" | \"wavy\", ...}");
-        only(path, p, {"shape", "to", "toOffset", "direction", "size", "side", "plane", "turn", "start"});
+        only(path, p, {"shape", "to", "toOffset", "direction", "size", "side", "bulge", "plane", "turn", "start"});
         static const std::map<std::string, PathShape> shapes{{"none", PathShape::None},       {"straight", PathShape::Straight},
                                                              {"arc", PathShape::Arc},         {"circle", PathShape::Circle},
                                                              {"zigzag", PathShape::Zigzag},   {"wavy", PathShape::Wavy}};
@@ -274,6 +280,8 @@ private:
             out.direction = direction(path["direction"], p + "/direction");
             if (out.sizeMm < 1.0) fail(p + "/size", "a path in a direction needs its size in mm");
         }
+        if (path.contains("bulge") && out.path != PathShape::Arc) fail(p + "/bulge", "only an arc has a bulge");
+        out.bulgeMm = number(path, p, "bulge", kSizeMm, 0.0);
         if (path.contains("side")) out.side = direction(path["side"], p + "/side");
         else if (out.path == PathShape::Arc || out.path == PathShape::Zigzag || out.path == PathShape::Wavy)
             fail(p + "/side", "an arc, zigzag or wavy path names the side it bulges to (\"up\", \"left\" ...)");
@@ -291,6 +299,8 @@ private:
                                 out.local == LocalMovement::Nod || out.local == LocalMovement::Rub;
         out.localCount = whole(local, p, "count", 1, 12, oscillates ? 2 : 1);
         out.localDegrees = number(local, p, "degrees", kDegrees, out.local == LocalMovement::Nod ? 30.0 : 60.0);
+        if (out.local == LocalMovement::OpenClose && out.localCount > 1 && out.path != PathShape::None)
+            fail(p + "/count", "a repeated open-close is a local movement over a still hand: give no path, or repeat the path");
         if (out.local == LocalMovement::Wiggle) out.localWith = shape(local, p, "with", true);
         else if (local.contains("with")) fail(p + "/with", "only a wiggle alternates with another handshape");
         if ((out.local == LocalMovement::Flick || out.local == LocalMovement::Bend || out.local == LocalMovement::OpenClose) &&

@@ -56,19 +56,19 @@ TEST(StoryCli, CheckSaysOkForTheExampleAndNamesLineAndColumnOfAnUnknownSign) {
 }
 
 // Issue 22: a story at arc positions no animator file covers, with a character whose gloss no
-// sign has (fingerspelled).
+// sign has (fingerspelled; TUTOR, since STUDENT is in the default lexicon now).
 const char* kNewPlaces = R"json({
   "format": "signstim-story", "version": 1, "title": "New places",
-  "characters": [{"gloss": "STUDENT", "position": 0.5}, {"gloss": "MARY", "position": -0.5, "spelled": "MARY"}],
+  "characters": [{"gloss": "TUTOR", "position": 0.5}, {"gloss": "MARY", "position": -0.5, "spelled": "MARY"}],
   "sentences": [
-    "STUDENT IX(0.5) ASK MARY IX(-0.5)",
-    "IX(MARY) TELL IX(STUDENT) MY"
+    "TUTOR IX(0.5) ASK MARY IX(-0.5)",
+    "IX(MARY) TELL IX(TUTOR) MY"
   ]
 })json";
 
-// A lab's lexicon: STUDENT (new) and MY (the starter's, slower).
+// A lab's lexicon: TUTOR (new) and MY (the starter's, slower).
 const char* kLabLexicon = R"({"format": "signstim-lexicon", "version": 1, "signs": [
-  {"gloss": "STUDENT", "hands": ["right"], "keyframes": {"right": [
+  {"gloss": "TUTOR", "hands": ["right"], "keyframes": {"right": [
     {"time": 0, "at": "chest", "offset": [0, 0, 70], "touch": "palm", "fingers": [-0.4, 1, 0], "palm": [0, 0, -1], "handshape": "open-B"},
     {"time": 0.3, "at": "chest", "offset": [60, -40, 90], "touch": "palm", "fingers": [-0.4, 1, 0], "palm": [0, 0, -1], "handshape": "flat-O"}]}},
   {"gloss": "MY", "hands": ["right"], "contact": ["body"], "keyframes": {"right": [
@@ -85,17 +85,17 @@ TEST(StoryCli, ALabLexiconAddsToTheDefaultOneAndCheckListsOverridesAndFingerspel
                                    signstim::test::Capture::StdoutOnly);
     ASSERT_EQ(plain.status, 0) << plain.output;
     const auto check = runSignstim("story " + story + " --check --scenes " + shellQuote(kScenes));
-    EXPECT_NE(check.output.find("story.json:3: STUDENT will be fingerspelled (S-T-U-D-E-N-T): no sign of the lexicon "
-                                "has the gloss STUDENT (closest: STUDY"),
+    EXPECT_NE(check.output.find("story.json:3: TUTOR will be fingerspelled (T-U-T-O-R): no sign of the lexicon "
+                                "has the gloss TUTOR"),
               std::string::npos)
         << check.output;
     EXPECT_EQ(check.output.find("MARY will be fingerspelled"), std::string::npos) << "\"spelled\" says it is meant";
 
-    // With the lab's lexicon: STUDENT is a sign now (so the character is signed with it), MY is
+    // With the lab's lexicon: TUTOR is a sign now (so the character is signed with it), MY is
     // the lab's, and the default signs are all still there.
     const std::string lab = " --lexicon " + shellQuote((dir / "lab.json").string());
     const auto withLab = runSignstim("story " + story + " --check --scenes " + shellQuote(kScenes) + lab);
-    EXPECT_EQ(withLab.output.find("STUDENT will be fingerspelled"), std::string::npos) << withLab.output;
+    EXPECT_EQ(withLab.output.find("TUTOR will be fingerspelled"), std::string::npos) << withLab.output;
     EXPECT_NE(withLab.output.find("note: lexicon: " + (dir / "lab.json").string() + ":5: sign MY overrides " + kScenes +
                                   "/lexicon/notation.json:49"),
               std::string::npos)
@@ -103,27 +103,27 @@ TEST(StoryCli, ALabLexiconAddsToTheDefaultOneAndCheckListsOverridesAndFingerspel
     const auto timeline = runSignstim("story " + story + " --version point --json --scenes " + shellQuote(kScenes) + lab,
                                       signstim::test::Capture::StdoutOnly);
     ASSERT_EQ(timeline.status, 0) << timeline.output;
-    // The name STUDENT: seven letters fingerspelled without the lab's lexicon, one short sign with it.
+    // The name TUTOR: five letters fingerspelled without the lab's lexicon, one short sign with it.
     const auto nameSeconds = [](const std::string& output) {
         double seconds = 0.0;
         const nlohmann::json timelineJson = nlohmann::json::parse(output);
         for (const auto& span : timelineJson["spans"])
-            if (span.value("kind", "") == "name" && span.value("label", "") == "STUDENT")
+            if (span.value("kind", "") == "name" && span.value("label", "") == "TUTOR")
                 seconds += span["end"].get<double>() - span["start"].get<double>();
         return seconds;
     };
     EXPECT_GT(nameSeconds(timeline.output), 0.0);
-    EXPECT_LT(nameSeconds(timeline.output), 0.5 * nameSeconds(plain.output)) << "STUDENT is signed with the lab's sign";
+    EXPECT_LT(nameSeconds(timeline.output), 0.5 * nameSeconds(plain.output)) << "TUTOR is signed with the lab's sign";
 
     // A lab sign defined twice in its own files is an error naming file and line (exit 2).
     std::string twice = kLabLexicon;
-    twice.replace(twice.find("\"MY\""), 4, "\"STUDENT\"");
+    twice.replace(twice.find("\"MY\""), 4, "\"TUTOR\"");
     std::ofstream(dir / "twice.json") << twice;
     const auto bad = runSignstim("story " + story + " --check --scenes " + shellQuote(kScenes) + " --lexicon " +
                                  shellQuote((dir / "twice.json").string()));
     EXPECT_EQ(bad.status, 2) << bad.output;
     EXPECT_NE(bad.output.find("twice.json:5:"), std::string::npos) << bad.output;
-    EXPECT_NE(bad.output.find("STUDENT is defined twice"), std::string::npos) << bad.output;
+    EXPECT_NE(bad.output.find("TUTOR is defined twice"), std::string::npos) << bad.output;
 }
 
 TEST(StoryCli, NewArcPositionsRenderWithoutAnimatorFilesAndAnimatorDraftWritesThemAll) {
