@@ -32,8 +32,11 @@ UnitAnnotations makeUnitAnnotations(const LoadedStudy& s, const signer::Signer& 
         std::vector<const signer::Clip*> panels;
         std::vector<ElanPanel> elanPanels;
         for (std::size_t k = 0; k < versions.size(); ++k) {
-            panels.push_back(clips[versions[k]]);
-            elanPanels.push_back({k < labels.size() ? labels[k] : "", &timelines[versions[k]]});
+            // Only the animated versions have clips and timelines (they come first); a human
+            // version's panel shows a lab's recording, of which the renderer knows nothing.
+            const bool animated = versions[k] < clips.size() && versions[k] < timelines.size();
+            panels.push_back(animated ? clips[versions[k]] : nullptr);
+            if (animated) elanPanels.push_back({k < labels.size() ? labels[k] : "", &timelines[versions[k]]});
         }
         // The grid renderClips draws the panels in (app/study_units.cpp).
         const auto columns = static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(panels.size()))));

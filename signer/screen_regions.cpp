@@ -178,19 +178,22 @@ std::string screenRegionsCsv(const render::Scene& avatar, const SignerRig& rig, 
     std::string csv = "frame,time_ms,panel,region,x0,y0,x1,y1,visible\n";
     if (clips.empty()) return csv;
     double duration = 0.0;
-    for (const Clip* clip : clips) duration = std::max(duration, clip->durationSeconds());
+    // A null panel is one no signer is drawn in (a lab's recording, a human-video version): no rows.
+    for (const Clip* clip : clips)
+        if (clip) duration = std::max(duration, clip->durationSeconds());
     // renderClips' frames: one per 1/fps from 0 to the longest clip's end inclusive.
     const std::uint64_t total = static_cast<std::uint64_t>(std::floor(duration * framesPerSecond + 1e-9)) + 1;
     const render::Camera camera = clipCamera(avatar, rig, width, height, columns, rows);
-    std::vector<ClipPoser> posers;
-    for (const Clip* clip : clips) posers.emplace_back(rig, *clip);
+    std::vector<std::optional<ClipPoser>> posers;
+    for (const Clip* clip : clips) posers.push_back(clip ? std::optional<ClipPoser>(ClipPoser(rig, *clip)) : std::nullopt);
     csv.reserve(static_cast<std::size_t>(total) * clips.size() * 4 * 40);
     for (std::uint64_t f = 0; f < total; ++f) {
         const double t = static_cast<double>(f) / framesPerSecond;
         const std::string head = std::to_string(f) + "," + std::to_string(std::llround(t * 1000.0)) + ",";
         for (std::size_t k = 0; k < clips.size(); ++k) {
+            if (!posers[k]) continue;
             const render::ViewCell cell = render::viewCell(width, height, columns, rows, k);
-            const std::array<ScreenBox, 4> boxes = model.boxes(posers[k].next(t), camera, cell);
+            const std::array<ScreenBox, 4> boxes = model.boxes(posers[k]->next(t), camera, cell);
             const std::string panel = k < labels.size() ? labels[k] : "";
             for (std::size_t r = 0; r < boxes.size(); ++r) {
                 const ScreenBox& b = boxes[r];

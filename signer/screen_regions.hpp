@@ -74,7 +74,8 @@ private:
 // (signer/clip_render.hpp: the same frame count, times, grid and camera) in a width × height
 // image, as CSV (docs/study.md, "Eye-tracking regions"):
 //   frame,time_ms,panel,region,x0,y0,x1,y1,visible
-// one row per frame, panel (clips[k], named labels[k]; empty when not given) and region.
+// one row per frame, panel (clips[k], named labels[k]; empty when not given) and region; a
+// null clips[k] (a panel showing a lab's recording, not the signer) has no rows.
 // `frame` counts from 0; time_ms is the frame's start, frame · 1000 / fps rounded to the ms;
 // x0..y1 are empty when the region is not visible (visible 0).
 std::string screenRegionsCsv(const render::Scene& avatar, const SignerRig& rig, const ScreenRegionModel& model,

@@ -409,7 +409,14 @@ StudyListing planStudy(const StudyFile& study, const std::vector<Story>& stories
         }
         for (VerbVersion v : study.versions) listed.clips.push_back(clip(storyClipName(s, v)));
         for (const HumanVersion* h : humans)
-            if (!h->phase1Clips.empty()) listed.clips.push_back(clip(storyId(s) + "_version-" + h->name));
+            if (!h->phase1Clips.empty()) {
+                // A lab's recording: no eye-tracking regions or ELAN file (nothing is known of where
+                // its signer's face and hands are, or when each sign starts).
+                ListedClip recording = clip(storyId(s) + "_version-" + h->name);
+                recording.regions.clear();
+                recording.annotation.clear();
+                listed.clips.push_back(std::move(recording));
+            }
         listing.stories.push_back(std::move(listed));
     }
     for (const StudyInstruction& page : study.instructions) {
