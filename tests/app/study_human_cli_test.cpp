@@ -37,7 +37,8 @@ void syntheticClip(const fs::path& file, const std::string& size, int rate, doub
     ASSERT_EQ(r.status, 0) << r.output;
 }
 
-// A study folder: 2 animated versions and the synthetic "human" one in both phases (3 x 3),
+// A study folder: 2 animated versions and the synthetic "human" one in both phases (3 x 3), its
+// questions and instructions in English (no signed clips: study_done_when_cli_test.cpp has both),
 // its recordings in human/ beside the study file (story clips 4:3 at 25 fps, sentence clips
 // square at 10 fps, so both are normalised).
 fs::path studyWithRecordings(const fs::path& dir) {
@@ -56,6 +57,7 @@ fs::path studyWithRecordings(const fs::path& dir) {
   "stories": [")" + kScenes + R"(/stories/story-01.json", ")" + kScenes + R"(/stories/story-02.json", ")" +
                                kScenes + R"(/stories/story-03.json"],
   "phase2": {"story": ")" + kScenes + R"(/studies/phase2-sentences.json", "sentences": [1, 2, 3]},
+  "session": {"questions": "english", "instructions": {"show": "english"}},
   "render": {"size": "64x64", "fps": 2, "msaa": 1}
 })";
     return file;
