@@ -97,6 +97,10 @@ TEST(StudyDoneWhenCli, AslQuestionsAndAHumanVersionRenderVerifyShardAndResume) {
                              "clips/story-03_version-point.mp4"})
         EXPECT_TRUE(clips.count(path)) << path;
     EXPECT_EQ(runSignstim("study verify " + shellQuote(one.string())).status, 0);
+    // Eye-tracking regions for the signer's clips, none for a recording (nothing is known of it).
+    EXPECT_TRUE(fs::exists(one / "regions" / "story-01_version-point.csv"));
+    EXPECT_FALSE(fs::exists(one / "regions" / "story-01_version-human.csv"));
+    EXPECT_FALSE(fs::exists(one / "elan" / "story-01_version-human.eaf"));
     // The exports carry both: the question clips' columns and the human version's clips.
     const std::string conditions = readFile(one / "participants" / "P01" / "P01_conditions.csv");
     EXPECT_NE(conditions.find(",q1_video_file,q1_video_name,"), std::string::npos);

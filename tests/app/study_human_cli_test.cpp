@@ -113,9 +113,18 @@ TEST(StudyHumanCli, RecordingsAreNormalisedHashedVerifiedAndAChangedOneRendersOn
         const nlohmann::json& shows = entry.second["shows"];
         if (shows["phase"] != 2) continue;
         ASSERT_TRUE(shows.contains("sources")) << shows.dump();
+        std::string humanPanel;
         for (const auto& panel : shows["panels"].items())
-            if (panel.value() == "human") composite = shows["sources"].contains(panel.key());
+            if (panel.value() == "human") {
+                composite = shows["sources"].contains(panel.key());
+                humanPanel = panel.key();
+            }
         EXPECT_TRUE(composite) << shows.dump();
+        // Its eye-tracking regions: rows for the signer's panels, none for the recording's.
+        const fs::path stem = fs::path(entry.first).stem();
+        const std::string regions = readFile(out / "regions" / (stem.string() + ".csv"));
+        EXPECT_EQ(regions.find("," + humanPanel + ",face,"), std::string::npos) << stem;
+        EXPECT_NE(regions.find(",face,"), std::string::npos) << stem;
     }
     EXPECT_EQ(runSignstim("study verify " + shellQuote(out.string())).status, 0);
     // The exports and the review page carry the human version like any other.
