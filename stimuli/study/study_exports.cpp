@@ -64,7 +64,8 @@ void checkStudy(const StudyListing& listing) {
     // Panels and choices are lettered A..Z.
     if (versions == 0 || versions > 26) inconsistent(count(versions) + " versions; expected 1 to 26");
     for (const ListedStory& story : listing.stories) {
-        if (story.clips.size() != versions)
+        // One clip per phase-1 version: every version, or the first ones when a version is in phase 2 only.
+        if (story.clips.empty() || story.clips.size() > versions || story.clips.size() != listing.stories.front().clips.size())
             inconsistent(story.id + ": " + count(story.clips.size()) + " clips for " + count(versions) + " versions");
         for (const ListedClip& clip : story.clips) checkClip(clip, story.id);
         for (std::size_t q = 0; q < story.questions.size(); ++q) {
@@ -96,7 +97,7 @@ void checkStudy(const StudyListing& listing) {
                 inconsistent("groupVersion row " + count(s) + " has " + count(row.size()) + " groups; row 0 has " +
                              count(groups));
             for (std::size_t version : row)
-                if (version >= versions) inconsistent("groupVersion row " + count(s) + " names version " + count(version));
+                if (version >= listing.stories.at(s).clips.size()) inconsistent("groupVersion row " + count(s) + " names version " + count(version));
         }
     }
 }
@@ -117,7 +118,8 @@ const ListedParticipant& checkedParticipant(const StudyListing& listing, std::si
         const std::string name = participant.id + " phase-1 trial " + count(i + 1);
         if (trial.trial != i + 1) inconsistent(name + " is numbered " + count(trial.trial));
         if (trial.story >= listing.stories.size()) inconsistent(name + ": story index " + count(trial.story));
-        if (trial.version >= listing.versions.size()) inconsistent(name + ": version index " + count(trial.version));
+        if (trial.version >= listing.stories[trial.story].clips.size())
+            inconsistent(name + ": version index " + count(trial.version));
         if (haveGroups && listing.groupVersion[trial.story][participant.group] != trial.version)
             inconsistent(name + ": " + listing.stories[trial.story].id + " in version " + count(trial.version) +
                          ", but groupVersion gives group " + count(participant.group) + " version " +
