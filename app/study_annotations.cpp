@@ -34,7 +34,7 @@ UnitAnnotations makeUnitAnnotations(const LoadedStudy& s, const signer::Signer& 
         for (std::size_t k = 0; k < versions.size(); ++k) {
             // A human-video version (placed after the animated ones) has no signer clip: its panel
             // keeps its place in the grid and has no regions or tiers.
-            const bool signed_ = versions[k] < clips.size();
+            const bool signed_ = versions[k] < clips.size() && versions[k] < timelines.size();
             panels.push_back(signed_ ? clips[versions[k]] : nullptr);
             elanPanels.push_back({k < labels.size() ? labels[k] : "", signed_ ? &timelines[versions[k]] : nullptr});
         }

@@ -112,11 +112,9 @@ std::vector<HumanVersion> parseHumanVersions(const JsonSource& source, const jso
         }
         if (version.phase1Clips.empty() && version.phase2Clips.empty())
             source.failAt(at, "expected \"phase1Clips\" and/or \"phase2Clips\": the phases the version is shown in");
-        // The listing gives every story one clip per version (stimuli/study/study_listing.hpp):
-        // a version absent from phase 1 would need every writer to learn of it.
-        if (version.phase1Clips.empty())
-            source.failAt(at + "/phase2Clips", "a human version in phase 2 only is not supported yet: give it "
-                                               "\"phase1Clips\" as well, or leave it out of phase 2 instead");
+        // A version in phase 2 only (no phase1Clips) is left out of phase 1's design and comes
+        // after the phase-1 versions (orderedHumanVersions), so a story's clips are the first
+        // versions (stimuli/study/study_listing.hpp).
         versions.push_back(std::move(version));
     }
     return versions;

@@ -128,7 +128,7 @@ private:
             throw std::invalid_argument("study listing: " + std::to_string(versions) + " versions but " +
                                         std::to_string(listing_.versionLetters.size()) + " version letters");
         for (const ListedStory& story : listing_.stories)
-            if (story.clips.size() != versions)
+            if (story.clips.empty() || story.clips.size() > versions)  // fewer: a version in phase 2 only
                 throw std::invalid_argument("study listing: " + story.id + " has " + std::to_string(story.clips.size()) +
                                             " clips for " + std::to_string(versions) + " versions");
         for (const ListedSentence& sentence : listing_.sentences)
@@ -138,7 +138,7 @@ private:
                                                 " of " + std::to_string(versions));
         for (const ListedParticipant& participant : listing_.participants) {
             for (const ListedPhase1Trial& trial : participant.phase1)
-                if (trial.story >= listing_.stories.size() || trial.version >= versions)
+                if (trial.story >= listing_.stories.size() || trial.version >= listing_.stories[trial.story].clips.size())
                     throw std::invalid_argument("study listing: " + participant.id + " phase-1 trial " +
                                                 std::to_string(trial.trial) + " names story " +
                                                 std::to_string(trial.story) + ", version " +

@@ -1,6 +1,7 @@
 #include "stimuli/study/study_exports.hpp"
 
 #include "common/number_format.hpp"
+#include "stimuli/study/question_clips.hpp"
 #include "stimuli/study/study_design.hpp"
 
 #include <nlohmann/json.hpp>
@@ -63,7 +64,8 @@ void checkStudy(const StudyListing& listing) {
     // Panels and choices are lettered A..Z.
     if (versions == 0 || versions > 26) inconsistent(count(versions) + " versions; expected 1 to 26");
     for (const ListedStory& story : listing.stories) {
-        if (story.clips.size() != versions)
+        // One clip per phase-1 version: every version, or the first ones when a version is in phase 2 only.
+        if (story.clips.empty() || story.clips.size() > versions || story.clips.size() != listing.stories.front().clips.size())
             inconsistent(story.id + ": " + count(story.clips.size()) + " clips for " + count(versions) + " versions");
         for (const ListedClip& clip : story.clips) checkClip(clip, story.id);
         for (std::size_t q = 0; q < story.questions.size(); ++q) {
@@ -95,7 +97,7 @@ void checkStudy(const StudyListing& listing) {
                 inconsistent("groupVersion row " + count(s) + " has " + count(row.size()) + " groups; row 0 has " +
                              count(groups));
             for (std::size_t version : row)
-                if (version >= versions) inconsistent("groupVersion row " + count(s) + " names version " + count(version));
+                if (version >= listing.stories.at(s).clips.size()) inconsistent("groupVersion row " + count(s) + " names version " + count(version));
         }
     }
 }
@@ -116,7 +118,8 @@ const ListedParticipant& checkedParticipant(const StudyListing& listing, std::si
         const std::string name = participant.id + " phase-1 trial " + count(i + 1);
         if (trial.trial != i + 1) inconsistent(name + " is numbered " + count(trial.trial));
         if (trial.story >= listing.stories.size()) inconsistent(name + ": story index " + count(trial.story));
-        if (trial.version >= listing.versions.size()) inconsistent(name + ": version index " + count(trial.version));
+        if (trial.version >= listing.stories[trial.story].clips.size())
+            inconsistent(name + ": version index " + count(trial.version));
         if (haveGroups && listing.groupVersion[trial.story][participant.group] != trial.version)
             inconsistent(name + ": " + listing.stories[trial.story].id + " in version " + count(trial.version) +
                          ", but groupVersion gives group " + count(participant.group) + " version " +
@@ -174,6 +177,13 @@ std::size_t mostQuestions(const StudyListing& listing) {
     return most;
 }
 
+// Whether any question has a signed clip (the study's questions "asl" or "both"): only then do the
+// files carry qN_video_file and qN_video_name, so an English-only study's columns are unchanged.
+bool signsQuestions(const StudyListing& listing) {
+    return std::any_of(listing.stories.begin(), listing.stories.end(),
+                       [](const ListedStory& story) { return hasQuestionClips(story); });
+}
+
 std::size_t mostChoices(const StudyListing& listing) {
     std::size_t most = 0;
     for (const ListedStory& story : listing.stories)
@@ -200,8 +210,11 @@ std::vector<std::string> conditionsColumns(const StudyListing& listing) {
         "sentence_id", "gloss", "verb",                                                          // phase 2
         "video_file", "video_name", "poster_file", "poster_name", "duration_s"};                 // every row
     const std::size_t choices = mostChoices(listing);
+    const bool signedQuestions = signsQuestions(listing);
     for (std::size_t q = 0; q < mostQuestions(listing); ++q) {
         columns.push_back(questionColumn(q, "text"));
+        if (signedQuestions)  // issue 24: the signed question, played before the choices
+            for (const char* field : {"video_file", "video_name"}) columns.push_back(questionColumn(q, field));
         for (std::size_t c = 0; c < choices; ++c) columns.push_back(questionColumn(q, "choice_" + lowercase(choiceLetter(c))));
         columns.push_back(questionColumn(q, "answer"));
         columns.push_back(questionColumn(q, "answer_index"));
@@ -404,12 +417,19 @@ std::string trialTable(const StudyListing& listing, std::size_t participantIndex
         // as floats, and 1.0 cannot index a list. -1: the row has no question N.
         for (std::size_t q = 0; q < questions; ++q) table.set(questionColumn(q, "answer_index"), "-1");
     };
-    const auto textRow = [&](const std::string& display, const std::string& text, int phase) {
+    // A text row; when the study signs its instructions, the page's clip in the clip columns and
+    // the page's own text (what the clip signs) in place of the default wording.
+    const auto textRow = [&](const std::string& display, const std::string& text, int phase, std::string_view page) {
         setCommon(display, phase, 0);
         table.set("text", text);
         table.set("duration_s", "0.000");
+        for (const ListedInstruction& instruction : listing.instructions) {
+            if (instruction.page != page || instruction.clip.video.empty()) continue;
+            table.set("text", instruction.text);
+            setClipCells(table, instruction.clip);
+        }
     };
-    if (gorilla) textRow("instructions", gorillaIntro(listing), 1);
+    if (gorilla) textRow("instructions", gorillaIntro(listing), 1, "welcome");
     for (const ListedPhase1Trial& trial : participant.phase1) {
         const ListedStory& story = listing.stories[trial.story];
         setCommon("story", 1, trial.trial);
@@ -420,6 +440,10 @@ std::string trialTable(const StudyListing& listing, std::size_t participantIndex
         for (std::size_t q = 0; q < story.questions.size(); ++q) {
             const ListedQuestion& question = story.questions[q];
             table.set(questionColumn(q, "text"), question.text);
+            if (!question.clip.video.empty()) {
+                table.set(questionColumn(q, "video_file"), question.clip.video);
+                table.set(questionColumn(q, "video_name"), fileName(question.clip.video));
+            }
             for (std::size_t c = 0; c < question.choices.size(); ++c)
                 table.set(questionColumn(q, "choice_" + lowercase(choiceLetter(c))), question.choices[c]);
             table.set(questionColumn(q, "answer"), choiceLetter(static_cast<std::size_t>(question.answer)));
@@ -429,7 +453,7 @@ std::string trialTable(const StudyListing& listing, std::size_t participantIndex
             if (gorilla && q == 0) table.set("ANSWER", question.choices[static_cast<std::size_t>(question.answer)]);
         }
     }
-    if (gorilla && !participant.phase2.empty()) textRow("break", gorillaPart2(listing), 2);
+    if (gorilla && !participant.phase2.empty()) textRow("break", gorillaPart2(listing), 2, "part2");
     for (const ListedPhase2Trial& trial : participant.phase2) {
         const ListedSentence& sentence = listing.sentences[trial.sentence];
         setCommon("likert", 2, trial.trial);
@@ -441,7 +465,8 @@ std::string trialTable(const StudyListing& listing, std::size_t participantIndex
             table.set(panelColumn(panel), listing.versions[sentence.panelVersion[panel]]);
         table.set("panel_code", sentence.panelCode);
     }
-    if (gorilla) textRow("end", "Thank you! You have finished. Please tell the experimenter.", participant.phase2.empty() ? 1 : 2);
+    if (gorilla)
+        textRow("end", "Thank you! You have finished. Please tell the experimenter.", participant.phase2.empty() ? 1 : 2, "");
     return table.text();
 }
 

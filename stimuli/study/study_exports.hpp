@@ -36,14 +36,19 @@ std::string escapeHtml(std::string_view text);
 // Lines end in CRLF (RFC 4180); a field may hold an LF inside its quotes. Whole-number columns
 // are never empty (qN_answer_index is -1 where a row has no question N), so that pandas, and
 // with it PsychoPy's importConditions, reads them as integers; the participant's id is
-// `participant_id`, apart from PsychoPy's own `participant` field.
+// `participant_id`, apart from PsychoPy's own `participant` field. When the study signs its
+// questions (any question has a clip), each question N adds qN_video_file and qN_video_name (the
+// clip's path relative to the study folder, and its file name for a flat pool), empty where the
+// row has no question N.
 std::string conditionsCsv(const StudyListing& listing, std::size_t participant);
 
 // The participant's Gorilla spreadsheet: the conditions file's columns and trials with the rows
 // Gorilla's task flow needs around them -- `instructions` first, `break` before phase 2, `end`
 // last, their wording in `text` -- and Gorilla's columns: ANSWER (question 1's correct choice as
 // text, what a button response returns; qN_answer_text for the others), randomise_blocks and
-// randomise_trials (left empty: the order is the schedule's). Text rows have trial 0.
+// randomise_trials (left empty: the order is the schedule's). Text rows have trial 0. When the
+// study signs its instructions, the instructions and break rows carry the welcome and part-2
+// pages' clips in the clip columns and the pages' text (what the clips sign) in `text`.
 std::string gorillaSpreadsheetCsv(const StudyListing& listing, std::size_t participant);
 
 // jsPsych timeline variables of one participant: an object with "phase1" and "phase2"

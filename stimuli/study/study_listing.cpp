@@ -196,19 +196,22 @@ StudyListing listingFromJson(const json& j, const std::string& file) {
             s.questions.push_back(std::move(question));
         }
         const json& clips = r.list(stories[i], "clips", w);
-        if (clips.size() != versions) r.fail(w + "/clips", "one clip per version");
+        // One per phase-1 version: a version in phase 2 only (a human version) has none.
+        if (clips.empty() || clips.size() > versions) r.fail(w + "/clips", "one clip per phase-1 version");
         for (std::size_t c = 0; c < clips.size(); ++c) s.clips.push_back(r.clip(clips[c], w + "/clips/" + std::to_string(c)));
         listing.stories.push_back(std::move(s));
     }
     const json& groupVersion = r.list(j, "groupVersion", "");
     if (groupVersion.size() != listing.stories.size()) r.fail("/groupVersion", "one row per story");
+    // Phase 1's versions (and groups): all, or the first ones when a version is in phase 2 only.
+    const std::size_t phase1Versions = listing.stories.empty() ? versions : listing.stories.front().clips.size();
     for (std::size_t s = 0; s < groupVersion.size(); ++s) {
         const std::string w = "/groupVersion/" + std::to_string(s);
-        if (!groupVersion[s].is_array() || groupVersion[s].size() != versions) r.fail(w, "one version per group");
+        if (!groupVersion[s].is_array() || groupVersion[s].size() != phase1Versions) r.fail(w, "one version per group");
         std::vector<std::size_t> row;
         for (const json& v : groupVersion[s]) {
-            if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<std::uint64_t>() >= versions)
-                r.fail(w, "expected version indices below " + std::to_string(versions));
+            if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<std::uint64_t>() >= phase1Versions)
+                r.fail(w, "expected version indices below " + std::to_string(phase1Versions));
             row.push_back(v.get<std::size_t>());
         }
         listing.groupVersion.push_back(std::move(row));
@@ -230,13 +233,13 @@ StudyListing listingFromJson(const json& j, const std::string& file) {
         const std::string w = "/participants/" + std::to_string(i);
         ListedParticipant p;
         p.id = r.text(participants[i], "id", w);
-        p.group = r.index(participants[i], "group", w, versions);
+        p.group = r.index(participants[i], "group", w, phase1Versions);
         const json& phase1 = r.list(participants[i], "phase1", w);
         for (std::size_t t = 0; t < phase1.size(); ++t) {
             const std::string wt = w + "/phase1/" + std::to_string(t);
             p.phase1.push_back({static_cast<std::size_t>(r.count(phase1[t], "trial", wt)),
                                 r.index(phase1[t], "story", wt, listing.stories.size()),
-                                r.index(phase1[t], "version", wt, versions)});
+                                r.index(phase1[t], "version", wt, phase1Versions)});
         }
         const json& phase2 = r.list(participants[i], "phase2", w);
         for (std::size_t t = 0; t < phase2.size(); ++t) {

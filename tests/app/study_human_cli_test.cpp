@@ -37,7 +37,8 @@ void syntheticClip(const fs::path& file, const std::string& size, int rate, doub
     ASSERT_EQ(r.status, 0) << r.output;
 }
 
-// A study folder: 2 animated versions and the synthetic "human" one in both phases (3 x 3),
+// A study folder: 2 animated versions and the synthetic "human" one in both phases (3 x 3), its
+// questions and instructions in English (no signed clips: study_done_when_cli_test.cpp has both),
 // its recordings in human/ beside the study file (story clips 4:3 at 25 fps, sentence clips
 // square at 10 fps, so both are normalised).
 fs::path studyWithRecordings(const fs::path& dir) {
@@ -56,6 +57,7 @@ fs::path studyWithRecordings(const fs::path& dir) {
   "stories": [")" + kScenes + R"(/stories/story-01.json", ")" + kScenes + R"(/stories/story-02.json", ")" +
                                kScenes + R"(/stories/story-03.json"],
   "phase2": {"story": ")" + kScenes + R"(/studies/phase2-sentences.json", "sentences": [1, 2, 3]},
+  "session": {"questions": "english", "instructions": {"show": "english"}},
   "render": {"size": "64x64", "fps": 2, "msaa": 1}
 })";
     return file;
@@ -111,9 +113,18 @@ TEST(StudyHumanCli, RecordingsAreNormalisedHashedVerifiedAndAChangedOneRendersOn
         const nlohmann::json& shows = entry.second["shows"];
         if (shows["phase"] != 2) continue;
         ASSERT_TRUE(shows.contains("sources")) << shows.dump();
+        std::string humanPanel;
         for (const auto& panel : shows["panels"].items())
-            if (panel.value() == "human") composite = shows["sources"].contains(panel.key());
+            if (panel.value() == "human") {
+                composite = shows["sources"].contains(panel.key());
+                humanPanel = panel.key();
+            }
         EXPECT_TRUE(composite) << shows.dump();
+        // Its eye-tracking regions: rows for the signer's panels, none for the recording's.
+        const fs::path stem = fs::path(entry.first).stem();
+        const std::string regions = readFile(out / "regions" / (stem.string() + ".csv"));
+        EXPECT_EQ(regions.find("," + humanPanel + ",face,"), std::string::npos) << stem;
+        EXPECT_NE(regions.find(",face,"), std::string::npos) << stem;
     }
     EXPECT_EQ(runSignstim("study verify " + shellQuote(out.string())).status, 0);
     // The exports and the review page carry the human version like any other.
@@ -177,4 +188,46 @@ TEST(StudyHumanCli, ShardsMergeToTheBytesOfOneRun) {
     ASSERT_EQ(merge.status, 0) << merge.output;
     EXPECT_EQ(readFile(dir / "merged" / "manifest.json"), readFile(dir / "one" / "manifest.json"));
     EXPECT_EQ(runSignstim("study verify " + shellQuote((dir / "merged").string())).status, 0);
+}
+
+// A human version in phase 2 only: phase 1 renders and counterbalances the animated versions
+// alone (2 groups, no story clip of the recording), phase 2 composes it into its panel; verified,
+// and a changed recording renders its own sentence's unit again, nothing else. SYNTHETIC recordings.
+TEST(StudyHumanCli, APhase2OnlyVersionIsInEveryPanelAndNotInPhase1) {
+    const fs::path dir = freshDir("phase2-only");
+    for (int i = 1; i <= 3; ++i)
+        syntheticClip(dir / "human" / ("synthetic-likert-0" + std::to_string(i) + ".mp4"), "80x80", 10, 2.0, 90 * i);
+    const fs::path file = dir / "phase2-only.json";
+    std::ofstream(file) << R"({
+  "format": "signstim-study", "version": 1,
+  "title": "Synthetic human-video version in phase 2 only, a test", "seed": 3, "participants": 2,
+  "versions": ["point", "uninflected"],
+  "humanVersions": [{"name": "human", "phase2Clips": "human/synthetic-{sentence}.mp4"}],
+  "stories": [")" + kScenes + R"(/stories/story-01.json", ")" + kScenes + R"(/stories/story-02.json"],
+  "phase2": {"story": ")" + kScenes + R"(/studies/phase2-sentences.json", "sentences": [1, 2, 3]},
+  "session": {"questions": "english", "instructions": {"show": "english"}},
+  "render": {"size": "64x64", "fps": 2, "msaa": 1}
+})";
+    const fs::path out = dir / "out";
+    run(file, out);
+    const auto clips = videos(out);
+    EXPECT_EQ(clips.size(), 7u);  // 2 stories x 2 animated versions, 3 side-by-side sentences
+    for (const auto& entry : clips) {
+        const nlohmann::json& shows = entry.second["shows"];
+        if (shows["phase"] == 1) {
+            EXPECT_NE(shows["version"], "human") << entry.first;
+        }
+        if (shows["phase"] == 2) {
+            EXPECT_EQ(shows["panels"].size(), 3u) << shows.dump();
+            EXPECT_EQ(shows["sources"].size(), 1u) << shows.dump();
+        }
+    }
+    EXPECT_EQ(readFile(out / "overview.csv").substr(0, 29), "story,title,group_1,group_2\r\n");
+    EXPECT_NE(readFile(out / "participants" / "P01" / "P01_conditions.csv").find("panel_c_version"), std::string::npos);
+    EXPECT_EQ(runSignstim("study verify " + shellQuote(out.string())).status, 0);
+    syntheticClip(dir / "human" / "synthetic-likert-02.mp4", "80x80", 10, 3.0, 10);
+    const auto changed = runSignstim("study " + shellQuote(file.string()) + " --scenes " + shellQuote(kScenes) + " --out " +
+                                     shellQuote(out.string()));
+    EXPECT_NE(changed.output.find("1 of 5 units rendered, 4 already complete"), std::string::npos) << changed.output;
+    EXPECT_EQ(runSignstim("study verify " + shellQuote(out.string())).status, 0);
 }

@@ -35,3 +35,10 @@ signstim_add_test(signstim_app_study_human_tests
   SOURCES study_human_cli_test.cpp
   LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
 add_dependencies(signstim_app_study_human_tests signstim)
+# Issue 24's "Done when" in one small study: ASL questions and a synthetic human-video version
+# render, verify, shard (2 shards merged = one run, byte for byte) and resume (interrupted; a
+# changed question re-renders only its unit).
+signstim_add_test(signstim_app_study_done_when_tests
+  SOURCES study_done_when_cli_test.cpp
+  LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
+add_dependencies(signstim_app_study_done_when_tests signstim)

@@ -72,7 +72,7 @@ RESERVED = EXP_INFO | BUILDER | NUMPY | PSYCHOPY | set(keyword.kwlist) | set(dir
 
 WHOLE_NUMBER_COLUMNS = re.compile(r"^(phase|trial|group|q\d+_answer_index)$")
 TEXT_COLUMNS = re.compile(r"^(display|participant_id|story_id|story_title|version|sentence_id|gloss|verb|video_file|"
-                          r"video_name|poster_file|poster_name|q\d+_(text|choice_[a-z]|answer|answer_text)|"
+                          r"video_name|poster_file|poster_name|q\d+_(text|video_file|video_name|choice_[a-z]|answer|answer_text)|"
                           r"panel_[a-z]_version|panel_code)$")
 NAN = float("nan")
 

@@ -14,6 +14,12 @@ there (a renamed or deleted example fails the check, as does one that computes t
                              correct_choice must be the row's q1_answer_text (None in phase 2);
   opensesame-prepare         OpenSesame inline_script: with var.subject_nr 7, var.conditions_file
                              must be P07_conditions.csv, a file of the study.
+  psychopy-question-movie    (issue 24; run only on a study that signs its questions) Begin Routine
+                             of a question routine: question_movie must be the study folder's path
+                             of the row's q1_video_file (None where the row has no question 1);
+  psychopy-instruction-movies (run only on a study that signs its instructions) welcome_movie and
+                             part2_movie must be the clips the Gorilla sheet's instructions and
+                             break rows carry, in the study folder.
 Exit 0 pass, 1 a check failed, 2 bad usage. Standard library only.
 """
 
@@ -97,6 +103,7 @@ def main(argv):
             failures.append(f"psychopy: the movie path {clip} is not in the study's clips/ folder")
     if phase1 == 0:
         failures.append(f"{conditions_file} has no phase-1 row: the example was not exercised")
+    signed_examples(code, folder, study_folder, trials, target, failures)
 
     # OpenSesame: the subject number asked at the start, and the study's participant count.
     var = types.SimpleNamespace(subject_nr=number, participant_count=len(participants))
@@ -108,6 +115,38 @@ def main(argv):
         print(f"check_export_examples: the PsychoPy and OpenSesame examples of {docs} find {target}'s file and "
               f"score its {phase1} phase-1 rows ({len(trials)} rows)")
     return report(failures)
+
+
+def signed_examples(code, folder, study_folder, trials, target, failures):
+    """Issue 24: the question and instruction clips of a study that signs them."""
+    import csv
+    signed = [t for t in trials if t.get("q1_video_file")]
+    if "q1_video_file" in (trials[0] if trials else {}):
+        if not signed:
+            failures.append("the file has q1_video_file but no row fills it")
+        for trial in trials:
+            scope = dict(trial, os=os, study_folder=study_folder)
+            if not run("psychopy-question-movie", code.get("psychopy-question-movie", "missing()"), scope, failures):
+                return
+            wanted = os.path.join(study_folder, trial["q1_video_file"]) if trial.get("q1_video_file") else None
+            if scope.get("question_movie") != wanted:
+                failures.append(f"psychopy-question-movie: {trial['display']} row gives {scope.get('question_movie')!r}, "
+                                f"expected {wanted!r}")
+            if wanted and not wanted.startswith(str(folder / "clips") + os.sep):
+                failures.append(f"psychopy-question-movie: {wanted} is not in the study's clips/ folder")
+    sheet = folder / "participants" / target / f"{target}_gorilla.csv"
+    rows = list(csv.DictReader(sheet.open(encoding="utf-8", newline="")))
+    pages = {r["display"]: r["video_file"] for r in rows if r["display"] in ("instructions", "break") and r["video_file"]}
+    if not pages:
+        return
+    scope = {"os": os, "study_folder": study_folder}
+    if not run("psychopy-instruction-movies", code.get("psychopy-instruction-movies", "missing()"), scope, failures):
+        return
+    for display, variable in (("instructions", "welcome_movie"), ("break", "part2_movie")):
+        if display in pages and scope.get(variable) != os.path.join(study_folder, pages[display]):
+            failures.append(f"psychopy-instruction-movies: {variable} is {scope.get(variable)!r}, the {display} row's "
+                            f"clip is {pages[display]}")
+    print(f"check_export_examples: the signed question and instruction examples find their clips")
 
 
 def report(failures):

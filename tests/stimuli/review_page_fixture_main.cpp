@@ -207,6 +207,7 @@ int writeDocuments(const Options& options) {
     signstim::writeFileAtomic(options.out / marker, "written by signstim_review_page_fixture\n");
     testing::ReviewFixtureShape shape;
     if (options.small) shape = {.stories = 4, .participants = 4, .likertSentences = 4};
+    shape.signedQuestions = options.aslQuestions;  // issue 24: the clip columns of a signing study
     for (const StudyDocument& document : studyDocuments(testing::reviewFixtureListing(shape))) {
         fs::create_directories((options.out / document.path).parent_path());
         signstim::writeFileAtomic(options.out / document.path, document.contents);

@@ -179,6 +179,35 @@ inline StudyListing fixture(std::size_t versions = 4) {
     return listing;
 }
 
+// The fixture as a study that signs its questions and instructions (issue 24): every question of
+// every story but story 4's last has a clip named as the runner names it, and the welcome and
+// part-2 pages have theirs. Synthetic paths; no clip exists.
+inline StudyListing signedFixture(std::size_t versions = 4) {
+    StudyListing listing = fixture(versions);
+    listing.questionsShown = "both";
+    listing.instructionsShown = "asl";
+    for (ListedStory& story : listing.stories)
+        for (std::size_t q = 0; q < story.questions.size(); ++q) {
+            if (story.id == "story-04" && q + 1 == story.questions.size()) continue;
+            const std::string stem = story.id + "_question-" + std::to_string(q + 1);
+            story.questions[q].gloss = "WHO ASK WHO";
+            story.questions[q].clip.video = "clips/" + stem + ".mp4";
+            story.questions[q].clip.poster = "posters/" + stem + ".png";
+            story.questions[q].clip.durationSeconds = 2.5;
+        }
+    for (const char* page : {"welcome", "part2"}) {
+        ListedInstruction instruction;
+        instruction.page = page;
+        instruction.text = std::string("The ") + page + " page, in English.";
+        instruction.gloss = {"THANK-YOU HELP"};
+        instruction.clip.video = std::string("clips/instructions-") + page + ".mp4";
+        instruction.clip.poster = std::string("posters/instructions-") + page + ".png";
+        instruction.clip.durationSeconds = 6.25;
+        listing.instructions.push_back(instruction);
+    }
+    return listing;
+}
+
 inline std::vector<Row> conditionRows(const StudyListing& listing, std::size_t participant) {
     return rowsOf(parseCsv(conditionsCsv(listing, participant)));
 }

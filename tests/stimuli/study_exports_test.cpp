@@ -137,6 +137,73 @@ TEST(StudyExports, GorillaSpreadsheetHasInstructionBreakAndEndRowsAroundTheTrial
     }
 }
 
+TEST(StudyExports, SignedQuestionClipsAreColumnsOnlyWhenTheStudySignsItsQuestions) {
+    // An English-only study: the question columns are as before, no clip columns.
+    const Records englishRecords = parseCsv(conditionsCsv(fixture(), 0));
+    for (const std::string& name : englishRecords[0])
+        EXPECT_FALSE(name.ends_with("_video_file") && name != "video_file") << name;
+    const StudyListing listing = signedFixture();
+    const std::vector<std::string> header = parseCsv(conditionsCsv(listing, 0))[0];
+    EXPECT_EQ(std::set<std::string>(header.begin(), header.end()).size(), header.size()) << "column names repeat";
+    for (std::size_t q = 1; q <= 4; ++q) {
+        const std::string prefix = "q" + std::to_string(q) + "_";
+        const auto text = std::find(header.begin(), header.end(), prefix + "text");
+        // Next to the question's text, before its choices: the order a participant meets them.
+        ASSERT_NE(text, header.end());
+        ASSERT_LT(text + 2, header.end());
+        EXPECT_EQ(*(text + 1), prefix + "video_file");
+        EXPECT_EQ(*(text + 2), prefix + "video_name");
+    }
+    for (std::size_t p = 0; p < listing.participants.size(); ++p) {
+        const std::vector<Row> rows = conditionRows(listing, p);
+        for (const Row& row : rows) {
+            if (row.at("display") != "story") {
+                EXPECT_EQ(row.at("q1_video_file"), "") << "a phase-2 row asks no question";
+                continue;
+            }
+            const auto story = std::find_if(listing.stories.begin(), listing.stories.end(),
+                                            [&row](const ListedStory& s) { return s.id == row.at("story_id"); });
+            ASSERT_NE(story, listing.stories.end());
+            for (std::size_t q = 0; q < story->questions.size(); ++q) {
+                const std::string prefix = "q" + std::to_string(q + 1) + "_";
+                const ListedClip& clip = story->questions[q].clip;
+                // Relative to the study folder like video_file; the bare name for a flat pool.
+                EXPECT_EQ(row.at(prefix + "video_file"), clip.video) << row.at("story_id") << " " << prefix;
+                EXPECT_EQ(clip.video.empty() ? "" : "clips/" + row.at(prefix + "video_name"), clip.video);
+            }
+        }
+        // The Gorilla sheet: the same cells on its trial rows.
+        const std::vector<Row> sheet = rowsOf(parseCsv(gorillaSpreadsheetCsv(listing, p)));
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            const Row& row = sheet[i < listing.participants[p].phase1.size() ? 1 + i : 2 + i];
+            for (std::size_t q = 1; q <= 4; ++q)
+                EXPECT_EQ(row.at("q" + std::to_string(q) + "_video_name"), rows[i].at("q" + std::to_string(q) + "_video_name"));
+        }
+    }
+}
+
+TEST(StudyExports, GorillaInstructionAndBreakRowsCarryTheSignedPagesClipsAndText) {
+    const std::vector<Row> english = rowsOf(parseCsv(gorillaSpreadsheetCsv(fixture(), 0)));
+    EXPECT_EQ(english.front().at("video_name"), "") << "English-only instructions: no clip";
+    const StudyListing listing = signedFixture();
+    const std::vector<Row> sheet = rowsOf(parseCsv(gorillaSpreadsheetCsv(listing, 0)));
+    const Row& welcome = sheet.front();
+    const Row& part2 = sheet[1 + listing.participants[0].phase1.size()];
+    ASSERT_EQ(welcome.at("display"), "instructions");
+    ASSERT_EQ(part2.at("display"), "break");
+    for (const ListedInstruction& page : listing.instructions) {
+        const Row& row = page.page == "welcome" ? welcome : part2;
+        EXPECT_EQ(row.at("video_file"), page.clip.video);
+        EXPECT_EQ("clips/" + row.at("video_name"), page.clip.video);
+        EXPECT_EQ("posters/" + row.at("poster_name"), page.clip.poster);
+        EXPECT_EQ(row.at("duration_s"), "6.250");
+        EXPECT_EQ(row.at("text"), page.text) << "the text the clip signs";
+        EXPECT_EQ(row.at("trial"), "0");
+    }
+    EXPECT_EQ(sheet.back().at("display"), "end");
+    EXPECT_EQ(sheet.back().at("video_file"), "") << "the end page has no clip";
+}
+
 TEST(StudyExports, EveryTrialOfTheScheduleIsARowInOrder) {
     const StudyListing listing = fixture();
     for (std::size_t p = 0; p < listing.participants.size(); ++p) {

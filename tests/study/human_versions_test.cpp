@@ -5,6 +5,7 @@
 #include "stimuli/json_source.hpp"
 #include "stimuli/story/story.hpp"
 #include "stimuli/study/study.hpp"
+#include "stimuli/study/review_page.hpp"
 #include "stimuli/study/study_exports.hpp"
 
 #include "common/error.hpp"
@@ -98,7 +99,6 @@ TEST(HumanVersions, MistakesAreRefusedNamingTheField) {
     // "point" takes P; a human version named "pat" needs its own letter.
     EXPECT_NE(refusal(studyText(10, R"([{"name": "pat", "phase1Clips": "h/{story}.mp4"}])")).find("/humanVersions/0/name: the letter P"), std::string::npos);
     EXPECT_EQ(refusal(studyText(10, R"([{"name": "pat", "letter": "T", "phase1Clips": "h/{story}.mp4"}])")), "");
-    EXPECT_NE(refusal(studyText(10, R"([{"name": "human", "phase2Clips": "h/{sentence}.mp4"}])")).find("phase 2 only is not supported"), std::string::npos);
     // Five phase-1 versions need a multiple of five stories, and say the human version counts.
     const std::string notFive = refusal(studyText(12, kPhase1Only));
     EXPECT_NE(notFive.find("12 stories cannot be split evenly over 5 versions"), std::string::npos) << notFive;
@@ -148,6 +148,42 @@ TEST(HumanVersions, FiveVersionDesignsAreBalancedInThePhasesTheStudyNames) {
         EXPECT_NO_THROW(gorillaSpreadsheetCsv(listing, 0));
         EXPECT_NO_THROW(likertResponseSheetHtml(listing, 0));
     }
+}
+
+// A human version in phase 2 only: phase 1 is the animated versions' design (4 groups, a story's
+// clips are theirs alone), phase 2 shows all five in every panel equally often, and every writer
+// of the listing accepts it.
+TEST(HumanVersions, APhase2OnlyVersionLeavesPhase1ToTheOthersAndJoinsEveryPanel) {
+    const StudyFile study = parse(studyText(8, R"([{"name": "human", "phase2Clips": "h/{sentence}.mp4"}])", 5, 8));
+    const StudyDesignSpec spec = study.designSpec();
+    ASSERT_EQ(spec.versions, 4u);
+    ASSERT_EQ(spec.phase2Versions(), 5u);
+    const Story sentences = fakeSentences(5);
+    const StudyListing listing = planStudy(study, fakeStories(8), &sentences, "test", false);
+    EXPECT_EQ(listing.versions, (std::vector<std::string>{"point", "vector", "animator", "uninflected", "human"}));
+    for (const ListedStory& story : listing.stories) {
+        ASSERT_EQ(story.clips.size(), 4u) << story.id;
+        for (const ListedClip& clip : story.clips) EXPECT_EQ(clip.video.find("human"), std::string::npos);
+    }
+    for (const std::vector<std::size_t>& row : listing.groupVersion) EXPECT_EQ(row.size(), 4u);
+    for (const ListedParticipant& p : listing.participants)
+        for (const ListedPhase1Trial& t : p.phase1) EXPECT_LT(t.version, 4u) << p.id;
+    std::map<std::pair<std::size_t, std::size_t>, int> panelCount;
+    for (const ListedSentence& sentence : listing.sentences) {
+        ASSERT_EQ(sentence.panelVersion.size(), 5u);
+        for (std::size_t k = 0; k < 5; ++k) ++panelCount[{k, sentence.panelVersion[k]}];
+    }
+    EXPECT_EQ(panelCount.size(), 25u);  // every version in every panel, once over the 5 sentences
+    const std::string csv = conditionsCsv(listing, 0);
+    EXPECT_NE(csv.find("panel_e_version"), std::string::npos);
+    EXPECT_NE(overviewCsv(listing).find("story,title,group_1,group_2,group_3,group_4\r\n"), std::string::npos);
+    EXPECT_NO_THROW(gorillaSpreadsheetCsv(listing, 0));
+    EXPECT_NO_THROW(jspsychTimelineVariables(listing, 0));
+    EXPECT_NO_THROW(likertResponseSheetHtml(listing, 0));
+    EXPECT_NO_THROW(questionSheetHtml(listing));
+    EXPECT_NE(reviewPageHtml(listing).find("likert-01"), std::string::npos);
+    // The study folder's plan (what resume, verify and merge read back) holds it unchanged.
+    EXPECT_EQ(listingToJson(listingFromJson(listingToJson(listing), "plan.json")), listingToJson(listing));
 }
 
 // Adding a human version changes the design (and its hash); its recordings' paths do not.
