@@ -101,10 +101,10 @@ TEST(QuestionGloss, IsReadByTheStorysGlossParserWithTheStorysCharacters) {
 
 TEST(QuestionGloss, AVerbMayLackTheArgumentTheQuestionAsksFor) {
     // "JOHN ASK WHO": no object; "WHO ASK MARY": no subject. In a story sentence both are errors.
-    const StoryItem& noObject = parse(storyWithQuestion("JOHN ASK WHO")).questions[0].sentence.items[1];
+    const StoryItem noObject = parse(storyWithQuestion("JOHN ASK WHO")).questions[0].sentence.items[1];  // a copy: the story is a temporary
     EXPECT_EQ(noObject.subject, 0);
     EXPECT_EQ(noObject.object, -1);
-    const StoryItem& noSubject = parse(storyWithQuestion("WHO ASK MARY")).questions[0].sentence.items[1];
+    const StoryItem noSubject = parse(storyWithQuestion("WHO ASK MARY")).questions[0].sentence.items[1];
     EXPECT_EQ(noSubject.subject, -1);
     EXPECT_EQ(noSubject.object, 1);
 }
