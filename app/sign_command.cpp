@@ -6,6 +6,7 @@
 #include "app/commands.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "renderer/contact_sheet.hpp"
 #include "renderer/image_io.hpp"
 #include "renderer/renderer.hpp"
 #include "signer/avatar_render.hpp"
@@ -15,10 +16,7 @@
 #include "stimuli/story/sign_notation_check.hpp"
 #include "stimuli/story/story_world.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <memory>
 
 namespace signstim::app {
 namespace {
@@ -36,74 +34,6 @@ struct SignOptions {
 // [D] A sign is shown between short rests, in citation form (rate 1, not shortened for a
 // story: TimelineOptions::signScale 1).
 constexpr double kRestSeconds = 0.3;
-
-// Keeps every frame at half size for the contact sheet; frames at a contact event get a red
-// bar along their top, the others a grey one.
-class ContactSheetSink final : public render::FrameSink {
-public:
-    // Frames from `from` to `to` (clip seconds) are kept; the sign's own keys start at `signStart`.
-    ContactSheetSink(double fps, double from, double to, double signStart, std::vector<double> contacts)
-        : fps_(fps), from_(from), to_(to), signStart_(signStart), contacts_(std::move(contacts)) {}
-
-    void push(render::Image&& frame) override {
-        const double clipSeconds = static_cast<double>(pushed_++) / fps_;
-        if (clipSeconds < from_ - 1e-9 || clipSeconds > to_ + 1e-9) return;
-        // The signer's upper body: the middle 60 % across, the top 80 % (the hands' space), halved.
-        const std::uint32_t x0 = frame.width / 5, y0 = 0;
-        const std::uint32_t w = (frame.width * 3 / 5) / 2, h = (frame.height * 4 / 5) / 2;
-        render::Image tile;
-        tile.width = w;
-        tile.height = h;
-        tile.bytes.assign(static_cast<std::size_t>(w) * h * 4, 0);
-        const std::size_t bpp = frame.bytesPerPixel();
-        const auto channel = [&](std::uint32_t x, std::uint32_t y, int c) -> unsigned {
-            const std::size_t at = (static_cast<std::size_t>(y + y0) * frame.width + x + x0) * bpp;
-            return bpp == 4 ? frame.bytes[at + static_cast<std::size_t>(c)] : frame.bytes[at + 2 * static_cast<std::size_t>(c) + 1];
-        };
-        for (std::uint32_t y = 0; y < h; ++y)
-            for (std::uint32_t x = 0; x < w; ++x)
-                for (int c = 0; c < 4; ++c)
-                    tile.bytes[(static_cast<std::size_t>(y) * w + x) * 4 + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(
-                        (channel(2 * x, 2 * y, c) + channel(2 * x + 1, 2 * y, c) + channel(2 * x, 2 * y + 1, c) +
-                         channel(2 * x + 1, 2 * y + 1, c) + 2) / 4);
-        const double t = clipSeconds - signStart_;
-        bool contact = false;
-        for (double c : contacts_) contact = contact || std::abs(c - t) <= 0.5 / fps_;
-        const std::uint8_t bar[4] = {static_cast<std::uint8_t>(contact ? 220 : 150), static_cast<std::uint8_t>(contact ? 30 : 150),
-                                     static_cast<std::uint8_t>(contact ? 30 : 150), 255};
-        for (std::uint32_t y = 0; y < std::min<std::uint32_t>(h, contact ? 10 : 3); ++y)
-            for (std::uint32_t x = 0; x < w; ++x)
-                for (int c = 0; c < 4; ++c) tile.bytes[(static_cast<std::size_t>(y) * w + x) * 4 + static_cast<std::size_t>(c)] = bar[c];
-        tiles_.push_back(std::move(tile));
-    }
-    void finish() override {}
-    std::uint64_t framesPushed() const override { return pushed_; }
-    std::size_t kept() const { return tiles_.size(); }
-
-    render::Image sheet(int columns) const {
-        render::Image out;
-        if (tiles_.empty()) return out;
-        const std::uint32_t w = tiles_.front().width, h = tiles_.front().height, gap = 4;
-        const std::uint32_t cols = static_cast<std::uint32_t>(std::min<std::size_t>(static_cast<std::size_t>(columns), tiles_.size()));
-        const std::uint32_t rows = static_cast<std::uint32_t>((tiles_.size() + cols - 1) / cols);
-        out.width = cols * (w + gap) - gap;
-        out.height = rows * (h + gap) - gap;
-        out.bytes.assign(static_cast<std::size_t>(out.width) * out.height * 4, 255);
-        for (std::size_t i = 0; i < tiles_.size(); ++i) {
-            const std::uint32_t ox = static_cast<std::uint32_t>(i % cols) * (w + gap), oy = static_cast<std::uint32_t>(i / cols) * (h + gap);
-            for (std::uint32_t y = 0; y < h; ++y)
-                std::copy_n(tiles_[i].bytes.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * w * 4), w * 4,
-                            out.bytes.begin() + static_cast<std::ptrdiff_t>((static_cast<std::size_t>(oy + y) * out.width + ox) * 4));
-        }
-        return out;
-    }
-
-private:
-    double fps_, from_, to_, signStart_;
-    std::uint64_t pushed_ = 0;
-    std::vector<double> contacts_;
-    std::vector<render::Image> tiles_;
-};
 
 // What the sign is and whether it realizes what it claims; true when every check passes.
 bool report(const StoryWorld& world, const LexiconSign& sign) {
@@ -164,9 +94,9 @@ void renderSign(const SignOptions& o, const StoryWorld& world, const LexiconSign
     const int handle = renderer.addScene(signer.avatar());
     signer::ClipRenderOptions options;
     options.framesPerSecond = output.frameRate.value();
-    std::vector<double> contacts;
-    for (const ContactEvent& e : sign.contactEvents) contacts.push_back(e.timeSeconds);
-    ContactSheetSink sink(options.framesPerSecond, from, to, start, contacts);
+    std::vector<double> contacts;  // clip time: the sign's own keys start at `start`
+    for (const ContactEvent& e : sign.contactEvents) contacts.push_back(start + e.timeSeconds);
+    render::ContactSheetSink sink(options.framesPerSecond, from, to, contacts);
     signer::renderClips(renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink);
     const std::size_t frames = sink.kept();
     failOnValidationMessages(renderer);

@@ -15,4 +15,5 @@ target_sources(signstim_renderer PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/video_decoder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/frame_sink.cpp
   ${CMAKE_CURRENT_LIST_DIR}/relay_sinks.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/contact_sheet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/drawing_raster.cpp)

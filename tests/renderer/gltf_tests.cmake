@@ -6,6 +6,7 @@ signstim_add_test(signstim_renderer_gltf_tests
     ${CMAKE_CURRENT_LIST_DIR}/gltf_loader_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/gltf_validate_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/output_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/contact_sheet_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/animation_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/morph_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/gltf_writer_test.cpp
