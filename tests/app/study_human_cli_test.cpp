@@ -31,10 +31,7 @@ fs::path freshDir(const std::string& name) {
 
 // A synthetic clip (ffmpeg's test pattern, hue-shifted so each clip differs).
 void syntheticClip(const fs::path& file, const std::string& size, int rate, double seconds, int hue) {
-    fs::create_directories(file.parent_path());
-    const auto r = runShell("ffmpeg -v error -y -f lavfi -i 'testsrc2=size=" + size + ":rate=" + std::to_string(rate) +
-                            ":duration=" + std::to_string(seconds) + ",hue=h=" + std::to_string(hue) +
-                            "' -c:v libx264 -pix_fmt yuv420p " + shellQuote(file.string()) + " </dev/null");
+    const auto r = signstim::test::writeSyntheticRecording(file, size, rate, seconds, hue);
     ASSERT_EQ(r.status, 0) << r.output;
 }
 

@@ -55,6 +55,16 @@ struct CountingProber {
     }
 };
 
+// A stand-in for ffprobe that finds `problem` in every file it is given.
+VideoProber failingProber(int& calls, const std::string& problem) {
+    return [&calls, problem](const fs::path&) {
+        ++calls;
+        VideoProbe p;
+        p.problem = problem;
+        return p;
+    };
+}
+
 HumanClips clipsOf(const fs::path& file, const std::string& sha256, const VideoProbe& probe) {
     HumanClips clips;
     HumanClip clip;
@@ -130,12 +140,7 @@ TEST(HumanProbeCache, AProbeThatFoundAProblemIsNotKept) {
     const fs::path recording = dir / "synthetic-notes.mp4";
     write(recording, "not a video\n");
     int calls = 0;
-    const VideoProber broken = [&](const fs::path&) {
-        ++calls;
-        VideoProbe p;
-        p.problem = "not a video ffmpeg can read";
-        return p;
-    };
+    const VideoProber broken = failingProber(calls, "not a video ffmpeg can read");
     HumanProbeCache cache;
     std::string sha256;
     EXPECT_EQ(probeRecording(recording, sha256, cache, broken).problem, "not a video ffmpeg can read");
@@ -147,12 +152,7 @@ TEST(HumanProbeCache, AProbeThatFoundAProblemIsNotKept) {
 TEST(HumanProbeCache, AMissingRecordingIsLeftToTheProbeToReport) {
     const fs::path dir = freshDir("missing");
     int calls = 0;
-    const VideoProber missing = [&](const fs::path&) {
-        ++calls;
-        VideoProbe p;
-        p.problem = "no such file";
-        return p;
-    };
+    const VideoProber missing = failingProber(calls, "no such file");
     HumanProbeCache cache;
     std::string sha256 = "left from before";
     EXPECT_EQ(probeRecording(dir / "no-such-recording.mp4", sha256, cache, missing).problem, "no such file");
