@@ -76,6 +76,17 @@ HumanClips clipsOf(const fs::path& file, const std::string& sha256, const VideoP
     return clips;
 }
 
+// A run of its own: `recording` (written with "synthetic recording A") probed by `counter` and
+// its probe kept in `dir`. Its hash.
+std::string probedInto(const fs::path& dir, const fs::path& recording, CountingProber& counter) {
+    write(recording, "synthetic recording A\n");
+    HumanProbeCache cache;
+    std::string sha256;
+    const VideoProbe probe = probeRecording(recording, sha256, cache, counter.prober());
+    writeHumanProbeCache(dir, clipsOf(recording, sha256, probe));
+    return sha256;
+}
+
 void expectSameProbe(const VideoProbe& a, const VideoProbe& b) {
     EXPECT_EQ(a.problem, b.problem);
     EXPECT_EQ(a.container, b.container);
@@ -115,11 +126,8 @@ TEST(HumanProbeCache, ARecordingIsProbedOnceThenReadFromTheStudyFolderByTheNextR
 TEST(HumanProbeCache, AChangedRecordingIsProbedAgainAndItsOldEntryDropped) {
     const fs::path dir = freshDir("changed");
     const fs::path recording = dir / "synthetic-story-01.mp4";
-    write(recording, "synthetic recording A\n");
     CountingProber counter;
-    HumanProbeCache cache;
-    std::string before;
-    writeHumanProbeCache(dir, clipsOf(recording, before, probeRecording(recording, before, cache, counter.prober())));
+    const std::string before = probedInto(dir, recording, counter);
     ASSERT_EQ(counter.calls, 1);
 
     // The same size, name and folder, other bytes: only its hash tells.
@@ -164,11 +172,8 @@ TEST(HumanProbeCache, AMissingRecordingIsLeftToTheProbeToReport) {
 TEST(HumanProbeCache, ACacheFileThatIsNotOneIsEmpty) {
     const fs::path dir = freshDir("malformed");
     const fs::path recording = dir / "synthetic-story-01.mp4";
-    write(recording, "synthetic recording A\n");
     CountingProber counter;
-    HumanProbeCache cache;
-    std::string sha256;
-    writeHumanProbeCache(dir, clipsOf(recording, sha256, probeRecording(recording, sha256, cache, counter.prober())));
+    probedInto(dir, recording, counter);
     ASSERT_EQ(readHumanProbeCache(dir).bySha256.size(), 1u);  // the file as written is read back
     const std::string good = [&] {
         std::ifstream in(dir / kHumanProbeCacheFile, std::ios::binary);
