@@ -10,6 +10,7 @@
 #include "stimuli/study/study.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -29,9 +30,39 @@ struct HumanClip {
 // Every unit's recordings, by unit id ("story-03", "likert-05"), in version order.
 using HumanClips = std::map<std::string, std::vector<HumanClip>>;
 
-// Probes and hashes every recording the study names. Throws InputError (exit 2) naming the
-// file, what is wrong, the version, the unit and the study file's pattern.
-HumanClips loadHumanClips(const stimuli::StudyFile& study, const stimuli::StudyListing& listing);
+// ---- probes kept between runs ------------------------------------------------------------------
+// Probing a recording decodes every frame (ffprobe -count_frames, render::probeVideo): seconds
+// per recording, on every load of the study. So the probes are kept in the study folder by the
+// SHA-256 of the recording's bytes: a re-run, or a shard rendering into the same folder, probes
+// only a recording it has not seen, and a changed recording (other bytes, another hash) is
+// probed again. Only probes that found no problem are kept; a missing, unreadable or malformed
+// file, or one another signstim version wrote, is an empty cache (everything probed again).
+inline constexpr const char* kHumanProbeCacheFile = ".signstim/human-probes.json";
+
+struct HumanProbeCache {
+    std::map<std::string, render::VideoProbe> bySha256;
+};
+
+// What probes a recording: render::probeVideo (ffprobe), or a test's stand-in.
+using VideoProber = std::function<render::VideoProbe(const std::filesystem::path&)>;
+
+HumanProbeCache readHumanProbeCache(const std::filesystem::path& studyFolder);
+// The probes of `clips` only (a replaced recording's old entry goes), written atomically.
+void writeHumanProbeCache(const std::filesystem::path& studyFolder, const HumanClips& clips);
+
+// `file`'s probe: from `cache` when its bytes' SHA-256 is there, else from `probe` (or
+// render::probeVideo when empty), added to `cache` when it found no problem. `sha256` receives
+// the hash of a readable file, else is left empty (the probe then says what is wrong).
+render::VideoProbe probeRecording(const std::filesystem::path& file, std::string& sha256, HumanProbeCache& cache,
+                                  const VideoProber& probe = {});
+
+// ---- the study's recordings --------------------------------------------------------------------
+
+// Probes (through `cache`, probeRecording) and hashes every recording the study names. Throws
+// InputError (exit 2) naming the file, what is wrong, the version, the unit and the study file's
+// pattern.
+HumanClips loadHumanClips(const stimuli::StudyFile& study, const stimuli::StudyListing& listing, HumanProbeCache& cache,
+                          const VideoProber& probe = {});
 
 // A unit's input hash with its recordings' hashes joined (unchanged when it shows none, so
 // studies without human versions keep their hashes).

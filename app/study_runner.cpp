@@ -125,7 +125,10 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
                                studyInputs(data, s.world->lexiconPath, s.world->labLexiconPath,
                                            signer::defaultAvatarPath(data)));
     s.units = studyUnits(s.listing);
-    s.humanClips = loadHumanClips(s.study, s.listing);  // probed now: a bad recording fails before any frame
+    // Probed now: a bad recording fails before any frame. A recording this folder has probed
+    // before (the same bytes) is not decoded again (app/study_human.hpp).
+    HumanProbeCache probes = options.out.empty() ? HumanProbeCache{} : readHumanProbeCache(options.out);
+    s.humanClips = loadHumanClips(s.study, s.listing, probes);
     return s;
 }
 
@@ -297,6 +300,7 @@ StudyRunReport runStudy(const StudyRunOptions& options) {
     if (const std::size_t stale = removeStaleTemporaries(dir); stale > 0 && !options.quiet)
         std::fprintf(stderr, "signstim study: removed %zu temporar%s left by a killed run\n", stale, stale == 1 ? "y" : "ies");
     writeFileAtomic(dir / kStudyPlanFile, plan.dump(2) + "\n");
+    writeHumanProbeCache(dir, s.humanClips);
 
     const std::map<std::string, std::string> hashes = planInputHashes(plan);
     const std::vector<StudyUnit> mine = shardUnits(s.units, options.shardIndex, options.shardCount);

@@ -1,6 +1,8 @@
 # signstim_embed_text(TARGET target NAMESPACE ns FILES name=relative/path ...)
 # Embeds text files (paths relative to the current source folder) in `target` as
 # `extern const std::string_view name` in namespace `ns`, regenerated when a file changes.
+# name=first/path+second/path+...: the files joined in that order, byte for byte (a script kept
+# in parts by concern and served as one file, e.g. the jsPsych experiment's experiment.js).
 function(signstim_embed_text)
   cmake_parse_arguments(ARG "" "TARGET;NAMESPACE" "FILES" ${ARGN})
   set(output ${CMAKE_CURRENT_BINARY_DIR}/generated/${ARG_TARGET}_embedded.cpp)
@@ -11,8 +13,14 @@ function(signstim_embed_text)
     string(SUBSTRING "${entry}" 0 ${equals} name)
     math(EXPR start "${equals} + 1")
     string(SUBSTRING "${entry}" ${start} -1 path)
-    list(APPEND inputs "${name}=${CMAKE_CURRENT_SOURCE_DIR}/${path}")
-    list(APPEND depends ${CMAKE_CURRENT_SOURCE_DIR}/${path})
+    string(REPLACE "+" ";" parts "${path}")
+    set(absolute)
+    foreach(part ${parts})
+      list(APPEND absolute ${CMAKE_CURRENT_SOURCE_DIR}/${part})
+      list(APPEND depends ${CMAKE_CURRENT_SOURCE_DIR}/${part})
+    endforeach()
+    string(REPLACE ";" "+" absolute "${absolute}")
+    list(APPEND inputs "${name}=${absolute}")
   endforeach()
   string(REPLACE ";" "|" inputs_argument "${inputs}")  # one command argument
   add_custom_command(

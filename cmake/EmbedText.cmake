@@ -1,7 +1,8 @@
-# cmake -DOUTPUT=file.cpp -DNAMESPACE=ns -DINPUTS="name1=path1|name2=path2" -P EmbedText.cmake
+# cmake -DOUTPUT=file.cpp -DNAMESPACE=ns -DINPUTS="name1=path1|name2=path2a+path2b" -P EmbedText.cmake
 # Writes a C++ source defining `extern const std::string_view name` in namespace `ns` for each
-# input, holding the file's bytes (a raw string literal), so the binary never reads these
-# files at run time. Called at build time by signstim_embed_text (cmake/Embed.cmake).
+# input, holding the file's bytes (a raw string literal; path+path+...: the files' bytes joined in
+# order), so the binary never reads these files at run time. Called at build time by
+# signstim_embed_text (cmake/Embed.cmake).
 set(delimiter "signstim_embed")
 string(REPLACE "|" ";" INPUTS "${INPUTS}")
 set(text "// Generated from the files below by cmake/EmbedText.cmake at build time: do not edit.\n")
@@ -11,7 +12,12 @@ foreach(entry IN LISTS INPUTS)
   string(SUBSTRING "${entry}" 0 ${equals} name)
   math(EXPR start "${equals} + 1")
   string(SUBSTRING "${entry}" ${start} -1 path)
-  file(READ "${path}" contents)
+  string(REPLACE "+" ";" parts "${path}")
+  set(contents "")
+  foreach(part IN LISTS parts)
+    file(READ "${part}" part_contents)
+    string(APPEND contents "${part_contents}")
+  endforeach()
   string(FIND "${contents}" ")${delimiter}\"" clash)
   if(NOT clash EQUAL -1)
     message(FATAL_ERROR "${path} contains )${delimiter}\" and cannot be embedded as a raw string")

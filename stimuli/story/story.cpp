@@ -1,26 +1,19 @@
 #include "stimuli/story/story.hpp"
 
 #include "common/input_limits.hpp"
-#include "stimuli/story/gloss.hpp"
 #include "stimuli/story/story_markers.hpp"
+#include "stimuli/story/story_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-namespace signstim::stimuli {
+namespace signstim::stimuli::story_detail {
 namespace {
-
-using nlohmann::json;
 
 // ---- where things are in the file's text ----------------------------------------------------
 // nlohmann::json keeps no positions; story errors need the line and column of a sentence's
 // characters, so the few arrays a story has are located by scanning the text itself.
-
-struct TextPosition {
-    int line = 0;
-    int column = 0;
-};
 
 // The line from the parser's index (JsonSource::lineOfOffset: no scan from the start, so a
 // story of many sentences costs no more than linear time); the column counted on its line.
@@ -95,539 +88,260 @@ std::vector<std::size_t> topLevelArrayElements(const std::string& text, const st
     return offsets;
 }
 
-// ---- reading fields --------------------------------------------------------------------------
-
-class StoryReader {
-public:
-    StoryReader(const JsonSource& source, const StoryVocabulary& vocabulary)
-        : source_(source), vocabulary_(vocabulary) {
-        if (!vocabulary_.verbs) throw std::invalid_argument("parseStory: no verb library");
-    }
-
-    Story read() {
-        const json& root = source_.root;
-        if (!root.is_object()) fail(1, "", "a story file is a JSON object {\"format\": \"signstim-story\", ...}");
-        checkKnownKeys(root, {"format", "version", "title", "characters", "sentences", "questions", "notes", "timing", "nonManuals"}, "");
-        const std::string format = requiredString(root, "format", "");
-        if (format != "signstim-story")
-            fail(lineOfKey("", "format"), "/format", "expected \"signstim-story\", got \"" + format + "\"");
-        const json& version = required(root, "version", "");
-        if (!version.is_number_integer() || version.get<long long>() != kStoryFormatVersion)
-            fail(lineOfKey("", "version"), "/version",
-                 "this signstim reads story files of version " + std::to_string(kStoryFormatVersion) + ", got " +
-                     version.dump());
-        story_.file = source_.file;
-        story_.title = requiredString(root, "title", "");
-        if (root.contains("notes")) story_.notes = requiredString(root, "notes", "");
-        if (root.contains("timing")) story_.timing = parseStoryTiming(source_, root["timing"], "/timing");
-        if (root.contains("nonManuals")) {
-            if (!root["nonManuals"].is_boolean())
-                fail(lineOfKey("", "nonManuals"), "/nonManuals", "expected true or false (false: no non-manuals; docs/nonmanuals.md)");
-            story_.nonManuals = root["nonManuals"].get<bool>();
-        }
-        readCharacters(required(root, "characters", ""));
-        readSentences(required(root, "sentences", ""));
-        // A story for phase 1 has questions (the study requires them); the sentences of phase 2
-        // are a story without any.
-        if (root.contains("questions")) readQuestions(root["questions"]);
-        return std::move(story_);
-    }
-
-private:
-    [[noreturn]] void fail(int line, const std::string& field, const std::string& message, int column = 0) const {
-        throw InputError(source_.file, line, column, field, message);
-    }
-
-    // The line of member `key` of the object at `pointer`, from the parser's index.
-    int lineOfKey(const std::string& pointer, const std::string& key) const {
-        return source_.lineAt(pointer + "/" + jsonPointerToken(key));
-    }
-
-    const json& required(const json& object, const std::string& key, const std::string& pointer) const {
-        if (!object.contains(key)) fail(source_.lineAt(pointer), pointer + "/" + key, "missing field '" + key + "'");
-        return object[key];
-    }
-
-    std::string requiredString(const json& object, const std::string& key, const std::string& pointer) const {
-        const json& value = required(object, key, pointer);
-        if (!value.is_string()) fail(lineOfKey(pointer, key), pointer + "/" + key, "expected text in quotes");
-        return value.get<std::string>();
-    }
-
-    void checkKnownKeys(const json& object, std::initializer_list<const char*> known, const std::string& pointer) const {
-        for (const auto& [key, value] : object.items()) {
-            bool found = false;
-            std::string list;
-            for (const char* k : known) {
-                found = found || key == k;
-                list += (list.empty() ? "" : ", ") + std::string(k);
-            }
-            if (!found)
-                fail(lineOfKey(pointer, key), pointer + "/" + key, "unknown field '" + key + "' (known: " + list + ")");
-        }
-    }
-
-    // Line of element `index` of the top-level array `key`, from its offset in the text.
-    // The offsets of each array are found once (a scan of the text), not once per element.
-    TextPosition elementPosition(const std::string& key, std::size_t index) const {
-        auto found = elementOffsets_.find(key);
-        if (found == elementOffsets_.end()) found = elementOffsets_.emplace(key, topLevelArrayElements(source_.text, key)).first;
-        const std::vector<std::size_t>& offsets = found->second;
-        if (index < offsets.size()) return positionOf(source_, offsets[index]);
-        return {lineOfKey("", key), 0};
-    }
-
-    void readCharacters(const json& list) {
-        const int listLine = lineOfKey("", "characters");
-        if (!list.is_array() || list.size() < 2 || list.size() > 6)
-            fail(listLine, "/characters", "expected 2 to 6 characters, each {\"gloss\": \"JOHN\", \"position\": 0.9}");
-        for (std::size_t i = 0; i < list.size(); ++i) {
-            const json& entry = list[i];
-            const std::string pointer = "/characters/" + std::to_string(i);
-            const int line = elementPosition("characters", i).line;
-            if (!entry.is_object()) fail(line, pointer, "expected {\"gloss\": \"JOHN\", \"position\": 0.9}");
-            for (const auto& [key, value] : entry.items())
-                if (key != "gloss" && key != "position" && key != "nameSign" && key != "spelled" && key != "description")
-                    fail(line, pointer + "/" + key,
-                         "unknown field '" + key + "' (known: gloss, position, nameSign, spelled, description)");
-            StoryCharacter character;
-            character.line = line;
-            if (!entry.contains("gloss") || !entry["gloss"].is_string())
-                fail(line, pointer + "/gloss", "each character needs a \"gloss\": the name the sentences use, e.g. \"JOHN\"");
-            character.gloss = entry["gloss"].get<std::string>();
-            const GlossParse parsed = parseGloss(character.gloss);
-            if (parsed.error || parsed.items.size() != 1 || parsed.items[0].kind != GlossItemKind::Word ||
-                parsed.items[0].hasArgumentList)
-                fail(line, pointer + "/gloss", "'" + character.gloss + "' is not a gloss name (capitals, e.g. JOHN)");
-            if (vocabulary_.verbs->find(character.gloss) || character.gloss == "IX" || character.gloss == "HOLD")
-                fail(line, pointer + "/gloss",
-                     "'" + character.gloss + "' is a verb or a gloss keyword; give the character another gloss name");
-            if (isSign(character.gloss)) character.nameSign = character.gloss;
-            if (story_.characterIndex(character.gloss) >= 0)
-                fail(line, pointer + "/gloss", "two characters are called " + character.gloss);
-            if (!entry.contains("position") || !entry["position"].is_number())
-                fail(line, pointer + "/position", "each character needs an arc \"position\" in [-1, 1], e.g. 0.9");
-            character.position = entry["position"].get<double>();
-            if (!(character.position >= -1.0 && character.position <= 1.0))
-                fail(line, pointer + "/position",
-                     "arc position " + entry["position"].dump() + " is outside [-1, 1] (-1 the signer's far left, 1 far right)");
-            for (const StoryCharacter& other : story_.characters)
-                if (std::abs(other.position - character.position) < kMinimumCharacterSeparation - 1e-9)
-                    fail(line, pointer + "/position",
-                         character.gloss + " at " + entry["position"].dump() + " and " + other.gloss + " at " +
-                             json(other.position).dump() +
-                             " are too close to tell apart when pointing; keep characters at least 0.2 apart");
-            if (entry.contains("nameSign")) {
-                if (!character.nameSign.empty())
-                    fail(line, pointer + "/nameSign", character.gloss + " is a sign and is signed with it; drop \"nameSign\"");
-                if (!entry["nameSign"].is_string()) fail(line, pointer + "/nameSign", "expected a lexicon gloss in quotes");
-                character.nameSign = entry["nameSign"].get<std::string>();
-                requireSign(character.nameSign, line, 0, pointer + "/nameSign");
-            }
-            character.spelled = character.gloss;
-            if (entry.contains("spelled")) {
-                if (!entry["spelled"].is_string()) fail(line, pointer + "/spelled", "expected letters in quotes");
-                character.spelled = entry["spelled"].get<std::string>();
-                character.spelledGiven = true;
-            }
-            if (character.nameSign.empty()) requireSpellable(character.spelled, line, 0, pointer + "/spelled");
-            if (entry.contains("description")) {
-                if (!entry["description"].is_string()) fail(line, pointer + "/description", "expected text in quotes");
-                character.description = entry["description"].get<std::string>();
-            }
-            story_.characters.push_back(std::move(character));
-        }
-    }
-
-    bool isSign(const std::string& gloss) const {
-        if (vocabulary_.isSign) return vocabulary_.isSign(gloss);
-        return std::find(vocabulary_.signs.begin(), vocabulary_.signs.end(), gloss) != vocabulary_.signs.end();
-    }
-
-    void requireSign(const std::string& gloss, int line, int column, const std::string& field) const {
-        if (isSign(gloss)) return;
-        std::vector<std::string> known = vocabulary_.signs;
-        for (const VerbDefinition& verb : vocabulary_.verbs->verbs) known.push_back(verb.name);
-        for (const StoryCharacter& character : story_.characters) known.push_back(character.gloss);
-        const std::vector<std::string> close = closestNames(gloss, known);
-        std::string hint;
-        for (const std::string& name : close) hint += (hint.empty() ? "" : ", ") + name;
-        fail(line, field,
-             "unknown gloss '" + gloss + "'" + (hint.empty() ? std::string() : " (closest known: " + hint + ")") +
-                 "; signs come from the lexicon, names from the story's characters, fs-WORD fingerspells",
-             column);
-    }
-
-    bool spellable(const std::string& word) const {
-        if (word.empty() || word.size() > limits::kFingerspelledLetters) return false;
-        return std::all_of(word.begin(), word.end(), [&](char c) {
-            return c >= 'A' && c <= 'Z' && (!vocabulary_.canFingerspell || vocabulary_.canFingerspell(c));
-        });
-    }
-
-    void requireSpellable(const std::string& letters, int line, int column, const std::string& field) const {
-        if (letters.empty()) fail(line, field, "nothing to fingerspell", column);
-        if (letters.size() > limits::kFingerspelledLetters)
-            fail(line, field,
-                 std::to_string(letters.size()) + " letters to fingerspell; at most " +
-                     std::to_string(limits::kFingerspelledLetters) + " (docs/errors.md, Limits)",
-                 column);
-        for (std::size_t i = 0; i < letters.size(); ++i) {
-            const char c = letters[i];
-            if (c < 'A' || c > 'Z')
-                fail(line, field, "'" + std::string(1, c) + "' cannot be fingerspelled (letters A to Z)",
-                     column > 0 ? column + static_cast<int>(i) : 0);
-            if (vocabulary_.canFingerspell && !vocabulary_.canFingerspell(c))
-                fail(line, field,
-                     "the letter " + std::string(1, c) + " has no handshape in the handshape library; add it there",
-                     column > 0 ? column + static_cast<int>(i) : 0);
-        }
-    }
-
-    // ---- sentences -------------------------------------------------------------------------
-
-    struct Referent {
-        int character = -1;
-        std::size_t item = 0;
-    };
-
-    void readSentences(const json& list) {
-        if (!list.is_array() || list.empty())
-            fail(lineOfKey("", "sentences"), "/sentences", "expected a list of sentences in gloss, e.g. \"JOHN IX(0.9) ASK MARY IX(-0.6)\"");
-        // Refused before any sentence is checked (each costs a synthesis in four versions).
-        if (list.size() > limits::kStorySentences)
-            fail(lineOfKey("", "sentences"), "/sentences",
-                 std::to_string(list.size()) + " sentences; a story has at most " + std::to_string(limits::kStorySentences) +
-                     " (docs/errors.md, Limits): split it into several stories");
-        placed_.assign(story_.characters.size(), false);
-        for (std::size_t i = 0; i < list.size(); ++i) {
-            const TextPosition where = elementPosition("sentences", i);
-            const std::string field = "/sentences/" + std::to_string(i);
-            if (!list[i].is_string()) fail(where.line, field, "a sentence is one string of gloss");
-            const std::string gloss = list[i].get<std::string>();
-            if (gloss.find_first_of("\"\\") != std::string::npos)
-                fail(where.line, field, "a sentence of gloss holds no quotes or backslashes", where.column);
-            // Column of the sentence's first character: just after its opening quote.
-            story_.sentences.push_back(readSentence(gloss, where.line, where.column + 1, field));
-        }
-    }
-
-    StorySentence readSentence(const std::string& gloss, int line, int firstColumn, const std::string& field) {
-        StorySentence sentence;
-        sentence.gloss = gloss;
-        sentence.line = line;
-        const GlossParse parsed = parseGloss(gloss);
-        // firstColumn 0: where the gloss stands is unknown (signed text given outside a JSON file's text).
-        auto column = [&](int withinSentence) { return firstColumn > 0 ? firstColumn + withinSentence - 1 : 0; };
-        if (parsed.error) fail(line, field, parsed.error->message, column(parsed.error->column));
-        if (parsed.items.size() > limits::kSentenceSigns)
-            fail(line, field,
-                 std::to_string(parsed.items.size()) + " signs in one sentence; at most " +
-                     std::to_string(limits::kSentenceSigns) + " (docs/errors.md, Limits): split the sentence",
-                 column(parsed.items[limits::kSentenceSigns].column));
-
-        std::vector<std::size_t> verbItems;
-        for (const GlossItem& written : parsed.items) {
-            StoryItem item;
-            item.line = line;
-            item.column = column(written.column);
-            switch (written.kind) {
-            case GlossItemKind::Hold:
-                item.kind = StoryItemKind::Hold;
-                item.holdSeconds = written.holdSeconds;
-                break;
-            case GlossItemKind::Fingerspelling:
-                item.kind = StoryItemKind::Fingerspelling;
-                item.letters = written.word;
-                requireSpellable(written.word, line, item.column + 3, field);
-                break;
-            case GlossItemKind::Pointing: {
-                item.kind = StoryItemKind::Pointing;
-                const GlossArgument& place = written.arguments.front();
-                const bool afterName = !sentence.items.empty() && sentence.items.back().kind == StoryItemKind::Name;
-                if (place.position) {
-                    item.position = *place.position;
-                    item.character = characterAt(item.position);
-                    if (afterName) {
-                        const StoryCharacter& named = story_.characters[static_cast<std::size_t>(sentence.items.back().character)];
-                        if (item.character != sentence.items.back().character)
-                            fail(line, field,
-                                 named.gloss + " stands at " + json(named.position).dump() + " (see \"characters\"), but IX(" +
-                                     json(item.position).dump() + ") points elsewhere",
-                                 column(place.column));
-                    } else if (item.character < 0) {
-                        fail(line, field,
-                             "no character stands at " + json(item.position).dump() + " (" + characterList() +
-                                 "); point at a character, or name one before IX to introduce it",
-                             column(place.column));
-                    }
-                } else {
-                    item.character = story_.characterIndex(place.name);
-                    if (item.character < 0)
-                        fail(line, field, "IX(" + place.name + "): " + place.name + " is not a character of this story (" +
-                                              characterList() + ")",
-                             column(place.column));
-                    item.position = story_.characters[static_cast<std::size_t>(item.character)].position;
-                    if (afterName && sentence.items.back().character != item.character)
-                        fail(line, field, "IX(" + place.name + ") right after " + sentence.items.back().gloss +
-                                              " points at another character",
-                             column(place.column));
-                }
-                if (afterName) {
-                    item.placesCharacter = !placed_[static_cast<std::size_t>(item.character)];
-                    placed_[static_cast<std::size_t>(item.character)] = true;
-                } else {
-                    requirePlaced(item.character, line, column(place.column), field);
-                }
-                break;
-            }
-            case GlossItemKind::Word: {
-                const std::string& word = written.word;
-                if (const VerbDefinition* verb = vocabulary_.verbs->find(word)) {
-                    item.kind = StoryItemKind::Verb;
-                    item.gloss = verb->name;
-                    verbItems.push_back(sentence.items.size());
-                    if (written.hasArgumentList) readVerbArguments(*verb, written, item, line, column, field);
-                } else if (const int character = story_.characterIndex(word); character >= 0) {
-                    if (written.hasArgumentList)
-                        fail(line, field, word + " is a character: write " + word + " IX(" +
-                                              json(story_.characters[static_cast<std::size_t>(character)].position).dump() +
-                                              ") to point at them",
-                             item.column);
-                    item.kind = StoryItemKind::Name;
-                    item.gloss = word;
-                    item.character = character;
-                    const StoryCharacter& c = story_.characters[static_cast<std::size_t>(character)];
-                    if (c.nameSign.empty()) item.letters = c.spelled;
-                } else if (signedText_ && !isSign(word) && !written.hasArgumentList && spellable(word)) {
-                    // Signed text (parseSignedGloss): a word the lexicon lacks is fingerspelled.
-                    item.kind = StoryItemKind::Fingerspelling;
-                    item.letters = word;
-                    spelledWords_.push_back(word);
-                } else {
-                    requireSign(word, line, item.column, field);
-                    if (written.hasArgumentList)
-                        fail(line, field, word + " is a plain sign and takes no arguments", item.column);
-                    item.kind = StoryItemKind::Sign;
-                    item.gloss = word;
-                }
-                break;
-            }
-            }
-            sentence.items.push_back(std::move(item));
-        }
-        for (std::size_t index : verbItems) resolveVerb(sentence, index, field);
-        sentence.markers = resolveMarkers(parsed.markers, story_, line, [&](int withinSentence, const std::string& message) {
-            fail(line, field, message, column(withinSentence));
-        });
-        return sentence;
-    }
-
-    void readVerbArguments(const VerbDefinition& verb, const GlossItem& written, StoryItem& item, int line,
-                           const std::function<int(int)>& column, const std::string& field) {
-        const std::size_t wanted = verb.objectOnly() ? 1 : 2;
-        if (written.arguments.size() != wanted)
-            fail(line, field,
-                 verb.objectOnly() ? verb.name + " inflects for its object only: " + verb.name + "(MARY)"
-                                   : verb.name + " takes a subject and an object: " + verb.name + "(JOHN,MARY)",
-                 item.column);
-        std::vector<int> characters;
-        for (const GlossArgument& argument : written.arguments) {
-            int character = -1;
-            if (argument.position) {
-                if (!(*argument.position >= -1.0 && *argument.position <= 1.0))
-                    fail(line, field, "arc position outside [-1, 1]", column(argument.column));
-                character = characterAt(*argument.position);
-                if (character < 0)
-                    fail(line, field, "no character stands at " + json(*argument.position).dump() + " (" + characterList() + ")",
-                         column(argument.column));
-            } else {
-                character = story_.characterIndex(argument.name);
-                if (character < 0)
-                    fail(line, field, argument.name + " is not a character of this story (" + characterList() + ")",
-                         column(argument.column));
-            }
-            characters.push_back(character);
-        }
-        item.object = characters.back();
-        if (!verb.objectOnly()) item.subject = characters.front();
-    }
-
-    void resolveVerb(StorySentence& sentence, std::size_t index, const std::string& field) {
-        StoryItem& verbItem = sentence.items[index];
-        const VerbDefinition& verb = *vocabulary_.verbs->find(verbItem.gloss);
-        const bool explicitArguments = verbItem.object >= 0;
-        if (!explicitArguments) {
-            // The rule (docs/stories.md): the object is the first character named or pointed
-            // to after the verb; the subject the nearest one before it. A name followed by its
-            // own IX counts once.
-            for (std::size_t i = index + 1; i < sentence.items.size() && verbItem.object < 0; ++i)
-                if (isReferent(sentence.items[i])) verbItem.object = sentence.items[i].character;
-            if (!verb.objectOnly())
-                for (std::size_t i = index; i-- > 0 && verbItem.subject < 0;)
-                    if (isReferent(sentence.items[i])) verbItem.subject = sentence.items[i].character;
-            // Signed text may ask for an argument ("WHO ASK ANN"): signed uninflected (issue 24).
-            if (signedText_) return;
-            if (verbItem.object < 0)
-                fail(verbItem.line, field,
-                     verb.name + " needs its object: name or point to a character after the verb (" + verb.name +
-                         " MARY IX(-0.6)), or write " + verb.name + (verb.objectOnly() ? "(MARY)" : "(JOHN,MARY)"),
-                     verbItem.column);
-            if (!verb.objectOnly() && verbItem.subject < 0)
-                fail(verbItem.line, field,
-                     verb.name + " needs its subject: name or point to a character before the verb (JOHN IX(0.9) " +
-                         verb.name + " ...), or write " + verb.name + "(JOHN,MARY)",
-                     verbItem.column);
-        }
-        if (verbItem.subject >= 0 && verbItem.subject == verbItem.object)
-            fail(verbItem.line, field,
-                 verb.name + ": subject and object are both " +
-                     story_.characters[static_cast<std::size_t>(verbItem.object)].gloss + "; write " + verb.name +
-                     "(SUBJECT,OBJECT) if the rule read the sentence wrongly",
-                 verbItem.column);
-        requirePlaced(verbItem.object, verbItem.line, verbItem.column, field);
-        if (verbItem.subject >= 0) requirePlaced(verbItem.subject, verbItem.line, verbItem.column, field);
-    }
-
-    static bool isReferent(const StoryItem& item) {
-        return (item.kind == StoryItemKind::Name || item.kind == StoryItemKind::Pointing) && item.character >= 0;
-    }
-
-    void requirePlaced(int character, int line, int column, const std::string& field) const {
-        if (placed_[static_cast<std::size_t>(character)]) return;
-        const StoryCharacter& c = story_.characters[static_cast<std::size_t>(character)];
-        fail(line, field,
-             c.gloss + " is used before being placed: introduce " + c.gloss + " first with " + c.gloss + " IX(" +
-                 json(c.position).dump() + ")",
-             column);
-    }
-
-    int characterAt(double position) const {
-        // Within half the minimum separation: IX(0.88) means the character at 0.9.
-        for (std::size_t i = 0; i < story_.characters.size(); ++i)
-            if (std::abs(story_.characters[i].position - position) < kMinimumCharacterSeparation / 2)
-                return static_cast<int>(i);
-        return -1;
-    }
-
-    std::string characterList() const {
-        std::string list;
-        for (const StoryCharacter& c : story_.characters)
-            list += (list.empty() ? "" : ", ") + c.gloss + " at " + json(c.position).dump();
-        return list;
-    }
-
-    // ---- questions -------------------------------------------------------------------------
-
-    void readQuestions(const json& list) {
-        if (!list.is_array())
-            fail(lineOfKey("", "questions"), "/questions", "expected a list of multiple-choice questions");
-        for (std::size_t i = 0; i < list.size(); ++i) {
-            const json& entry = list[i];
-            const std::string pointer = "/questions/" + std::to_string(i);
-            const int line = elementPosition("questions", i).line;
-            if (!entry.is_object()) fail(line, pointer, "expected {\"question\": ..., \"choices\": [...], \"answer\": \"A\"}");
-            for (const auto& [key, value] : entry.items())
-                if (key != "question" && key != "choices" && key != "answer" && key != "probes" && key != "gloss")
-                    fail(line, pointer + "/" + key,
-                         "unknown field '" + key + "' (known: question, gloss, choices, answer, probes)");
-            StoryQuestion question;
-            question.line = line;
-            if (!entry.contains("question") || !entry["question"].is_string() || entry["question"].get<std::string>().empty())
-                fail(line, pointer + "/question", "each question needs its \"question\" text");
-            question.text = entry["question"].get<std::string>();
-            const json& choices = entry.contains("choices") ? entry["choices"] : json();
-            if (!choices.is_array() || choices.size() < 3 || choices.size() > 4)
-                fail(line, pointer + "/choices", "expected 3 or 4 choices");
-            for (const json& choice : choices) {
-                if (!choice.is_string() || choice.get<std::string>().empty())
-                    fail(line, pointer + "/choices", "each choice is non-empty text");
-                question.choices.push_back(choice.get<std::string>());
-            }
-            const std::string lastLetter = choiceLetter(static_cast<int>(question.choices.size()) - 1);
-            if (!entry.contains("answer") || !entry["answer"].is_string() || entry["answer"].get<std::string>().size() != 1)
-                fail(line, pointer + "/answer", "the answer key is the letter of the right choice, \"A\" to \"" + lastLetter + "\"");
-            question.answer = entry["answer"].get<std::string>()[0] - 'A';
-            if (question.answer < 0 || question.answer >= static_cast<int>(question.choices.size()))
-                fail(line, pointer + "/answer",
-                     "answer \"" + entry["answer"].get<std::string>() + "\" is not one of the choices (\"A\" to \"" +
-                         lastLetter + "\")");
-            const json& probes = entry.contains("probes") ? entry["probes"] : json();
-            if (!probes.is_object() || !probes.contains("sentence") || !probes["sentence"].is_number_integer() ||
-                !probes.contains("verb") || !probes["verb"].is_string())
-                fail(line, pointer + "/probes",
-                     "say what the question probes: {\"sentence\": N (1-based), \"verb\": \"ASK\"}");
-            const long long sentence = probes["sentence"].get<long long>();
-            if (sentence < 1 || sentence > static_cast<long long>(story_.sentences.size()))
-                fail(line, pointer + "/probes/sentence",
-                     "sentence " + std::to_string(sentence) + " does not exist (1 to " +
-                         std::to_string(story_.sentences.size()) + ")");
-            question.probeSentence = static_cast<int>(sentence - 1);
-            question.probeVerb = probes["verb"].get<std::string>();
-            const StorySentence& probed = story_.sentences[static_cast<std::size_t>(question.probeSentence)];
-            const bool hasVerb = std::any_of(probed.items.begin(), probed.items.end(), [&](const StoryItem& item) {
-                return item.kind == StoryItemKind::Verb && item.gloss == question.probeVerb;
-            });
-            if (!hasVerb)
-                fail(line, pointer + "/probes/verb",
-                     "sentence " + std::to_string(sentence) + " (\"" + probed.gloss + "\") has no verb " + question.probeVerb);
-            if (entry.contains("gloss")) readQuestionGloss(entry["gloss"], i, question);
-            story_.questions.push_back(std::move(question));
-        }
-    }
-
-    // Issue 24: the question in gloss, read like a sentence of the story (after all of them: the
-    // characters are placed) as signed text.
-    void readQuestionGloss(const json& value, std::size_t index, StoryQuestion& question) {
-        const std::string pointer = "/questions/" + std::to_string(index) + "/gloss";
-        const int line = question.line;
-        if (!value.is_string() || value.get<std::string>().empty())
-            fail(line, pointer, "expected the question in gloss, e.g. \"TOM ASK WHO\"");
-        question.gloss = value.get<std::string>();
-        if (question.gloss.find_first_of("\"\\") != std::string::npos)
-            fail(line, pointer, "a question in gloss holds no quotes or backslashes");
-        // The column of its first character: the value's opening quote after "gloss" in the question.
-        TextPosition where{line, 0};
-        const auto found = elementOffsets_.find("questions");
-        if (found != elementOffsets_.end() && index < found->second.size()) {
-            const std::size_t key = source_.text.find("\"gloss\"", found->second[index]);
-            const std::size_t quote = key == std::string::npos ? key : source_.text.find('"', key + 7);
-            if (quote != std::string::npos) where = positionOf(source_, quote);
-        }
-        const bool wasSignedText = signedText_;
-        signedText_ = true;
-        spelledWords_.clear();
-        question.sentence = readSentence(question.gloss, where.line, where.column > 0 ? where.column + 1 : 0, pointer);
-        question.fingerspelled = spelledWords_;
-        signedText_ = wasSignedText;
-    }
-
-public:
-    // parseSignedGloss: the characters of `context` (placed), then one sentence of signed text.
-    StorySentence signedGloss(const std::string& gloss, const Story* context, int line, int column, const std::string& field,
-                              std::vector<std::string>* fingerspelled) {
-        if (context) story_.characters = context->characters;
-        story_.file = source_.file;
-        placed_.assign(story_.characters.size(), true);
-        signedText_ = true;
-        if (gloss.empty()) fail(line, field, "expected signed text in gloss");
-        if (gloss.find_first_of("\"\\") != std::string::npos) fail(line, field, "gloss holds no quotes or backslashes", column);
-        StorySentence sentence = readSentence(gloss, line, column, field);
-        if (fingerspelled) *fingerspelled = spelledWords_;
-        return sentence;
-    }
-
-private:
-    const JsonSource& source_;
-    const StoryVocabulary& vocabulary_;
-    Story story_;
-    std::vector<bool> placed_;
-    bool signedText_ = false;                 // reading signed text (parseSignedGloss's rules)
-    std::vector<std::string> spelledWords_;   // words signed text fingerspells, in order
-    mutable std::map<std::string, std::vector<std::size_t>> elementOffsets_;  // elementPosition's cache
-};
-
 }  // namespace
+
+// ---- fields and characters --------------------------------------------------------------------
+
+Story StoryReader::read() {
+    const json& root = source_.root;
+    if (!root.is_object()) fail(1, "", "a story file is a JSON object {\"format\": \"signstim-story\", ...}");
+    checkKnownKeys(root, {"format", "version", "title", "characters", "sentences", "questions", "notes", "timing", "nonManuals"}, "");
+    const std::string format = requiredString(root, "format", "");
+    if (format != "signstim-story")
+        fail(lineOfKey("", "format"), "/format", "expected \"signstim-story\", got \"" + format + "\"");
+    const json& version = required(root, "version", "");
+    if (!version.is_number_integer() || version.get<long long>() != kStoryFormatVersion)
+        fail(lineOfKey("", "version"), "/version",
+             "this signstim reads story files of version " + std::to_string(kStoryFormatVersion) + ", got " +
+                 version.dump());
+    story_.file = source_.file;
+    story_.title = requiredString(root, "title", "");
+    if (root.contains("notes")) story_.notes = requiredString(root, "notes", "");
+    if (root.contains("timing")) story_.timing = parseStoryTiming(source_, root["timing"], "/timing");
+    if (root.contains("nonManuals")) {
+        if (!root["nonManuals"].is_boolean())
+            fail(lineOfKey("", "nonManuals"), "/nonManuals", "expected true or false (false: no non-manuals; docs/nonmanuals.md)");
+        story_.nonManuals = root["nonManuals"].get<bool>();
+    }
+    readCharacters(required(root, "characters", ""));
+    readSentences(required(root, "sentences", ""));
+    // A story for phase 1 has questions (the study requires them); the sentences of phase 2
+    // are a story without any.
+    if (root.contains("questions")) readQuestions(root["questions"]);
+    return std::move(story_);
+}
+
+// Line of element `index` of the top-level array `key`, from its offset in the text.
+// The offsets of each array are found once (a scan of the text), not once per element.
+TextPosition StoryReader::elementPosition(const std::string& key, std::size_t index) const {
+    auto found = elementOffsets_.find(key);
+    if (found == elementOffsets_.end()) found = elementOffsets_.emplace(key, topLevelArrayElements(source_.text, key)).first;
+    const std::vector<std::size_t>& offsets = found->second;
+    if (index < offsets.size()) return positionOf(source_, offsets[index]);
+    return {lineOfKey("", key), 0};
+}
+
+void StoryReader::readCharacters(const json& list) {
+    const int listLine = lineOfKey("", "characters");
+    if (!list.is_array() || list.size() < 2 || list.size() > 6)
+        fail(listLine, "/characters", "expected 2 to 6 characters, each {\"gloss\": \"JOHN\", \"position\": 0.9}");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const json& entry = list[i];
+        const std::string pointer = "/characters/" + std::to_string(i);
+        const int line = elementPosition("characters", i).line;
+        if (!entry.is_object()) fail(line, pointer, "expected {\"gloss\": \"JOHN\", \"position\": 0.9}");
+        for (const auto& [key, value] : entry.items())
+            if (key != "gloss" && key != "position" && key != "nameSign" && key != "spelled" && key != "description")
+                fail(line, pointer + "/" + key,
+                     "unknown field '" + key + "' (known: gloss, position, nameSign, spelled, description)");
+        StoryCharacter character;
+        character.line = line;
+        if (!entry.contains("gloss") || !entry["gloss"].is_string())
+            fail(line, pointer + "/gloss", "each character needs a \"gloss\": the name the sentences use, e.g. \"JOHN\"");
+        character.gloss = entry["gloss"].get<std::string>();
+        const GlossParse parsed = parseGloss(character.gloss);
+        if (parsed.error || parsed.items.size() != 1 || parsed.items[0].kind != GlossItemKind::Word ||
+            parsed.items[0].hasArgumentList)
+            fail(line, pointer + "/gloss", "'" + character.gloss + "' is not a gloss name (capitals, e.g. JOHN)");
+        if (vocabulary_.verbs->find(character.gloss) || character.gloss == "IX" || character.gloss == "HOLD")
+            fail(line, pointer + "/gloss",
+                 "'" + character.gloss + "' is a verb or a gloss keyword; give the character another gloss name");
+        if (isSign(character.gloss)) character.nameSign = character.gloss;
+        if (story_.characterIndex(character.gloss) >= 0)
+            fail(line, pointer + "/gloss", "two characters are called " + character.gloss);
+        if (!entry.contains("position") || !entry["position"].is_number())
+            fail(line, pointer + "/position", "each character needs an arc \"position\" in [-1, 1], e.g. 0.9");
+        character.position = entry["position"].get<double>();
+        if (!(character.position >= -1.0 && character.position <= 1.0))
+            fail(line, pointer + "/position",
+                 "arc position " + entry["position"].dump() + " is outside [-1, 1] (-1 the signer's far left, 1 far right)");
+        for (const StoryCharacter& other : story_.characters)
+            if (std::abs(other.position - character.position) < kMinimumCharacterSeparation - 1e-9)
+                fail(line, pointer + "/position",
+                     character.gloss + " at " + entry["position"].dump() + " and " + other.gloss + " at " +
+                         json(other.position).dump() +
+                         " are too close to tell apart when pointing; keep characters at least 0.2 apart");
+        if (entry.contains("nameSign")) {
+            if (!character.nameSign.empty())
+                fail(line, pointer + "/nameSign", character.gloss + " is a sign and is signed with it; drop \"nameSign\"");
+            if (!entry["nameSign"].is_string()) fail(line, pointer + "/nameSign", "expected a lexicon gloss in quotes");
+            character.nameSign = entry["nameSign"].get<std::string>();
+            requireSign(character.nameSign, line, 0, pointer + "/nameSign");
+        }
+        character.spelled = character.gloss;
+        if (entry.contains("spelled")) {
+            if (!entry["spelled"].is_string()) fail(line, pointer + "/spelled", "expected letters in quotes");
+            character.spelled = entry["spelled"].get<std::string>();
+            character.spelledGiven = true;
+        }
+        if (character.nameSign.empty()) requireSpellable(character.spelled, line, 0, pointer + "/spelled");
+        if (entry.contains("description")) {
+            if (!entry["description"].is_string()) fail(line, pointer + "/description", "expected text in quotes");
+            character.description = entry["description"].get<std::string>();
+        }
+        story_.characters.push_back(std::move(character));
+    }
+}
+
+bool StoryReader::isSign(const std::string& gloss) const {
+    if (vocabulary_.isSign) return vocabulary_.isSign(gloss);
+    return std::find(vocabulary_.signs.begin(), vocabulary_.signs.end(), gloss) != vocabulary_.signs.end();
+}
+
+void StoryReader::requireSign(const std::string& gloss, int line, int column, const std::string& field) const {
+    if (isSign(gloss)) return;
+    std::vector<std::string> known = vocabulary_.signs;
+    for (const VerbDefinition& verb : vocabulary_.verbs->verbs) known.push_back(verb.name);
+    for (const StoryCharacter& character : story_.characters) known.push_back(character.gloss);
+    const std::vector<std::string> close = closestNames(gloss, known);
+    std::string hint;
+    for (const std::string& name : close) hint += (hint.empty() ? "" : ", ") + name;
+    fail(line, field,
+         "unknown gloss '" + gloss + "'" + (hint.empty() ? std::string() : " (closest known: " + hint + ")") +
+             "; signs come from the lexicon, names from the story's characters, fs-WORD fingerspells",
+         column);
+}
+
+bool StoryReader::spellable(const std::string& word) const {
+    if (word.empty() || word.size() > limits::kFingerspelledLetters) return false;
+    return std::all_of(word.begin(), word.end(), [&](char c) {
+        return c >= 'A' && c <= 'Z' && (!vocabulary_.canFingerspell || vocabulary_.canFingerspell(c));
+    });
+}
+
+void StoryReader::requireSpellable(const std::string& letters, int line, int column, const std::string& field) const {
+    if (letters.empty()) fail(line, field, "nothing to fingerspell", column);
+    if (letters.size() > limits::kFingerspelledLetters)
+        fail(line, field,
+             std::to_string(letters.size()) + " letters to fingerspell; at most " +
+                 std::to_string(limits::kFingerspelledLetters) + " (docs/errors.md, Limits)",
+             column);
+    for (std::size_t i = 0; i < letters.size(); ++i) {
+        const char c = letters[i];
+        if (c < 'A' || c > 'Z')
+            fail(line, field, "'" + std::string(1, c) + "' cannot be fingerspelled (letters A to Z)",
+                 column > 0 ? column + static_cast<int>(i) : 0);
+        if (vocabulary_.canFingerspell && !vocabulary_.canFingerspell(c))
+            fail(line, field,
+                 "the letter " + std::string(1, c) + " has no handshape in the handshape library; add it there",
+                 column > 0 ? column + static_cast<int>(i) : 0);
+    }
+}
+
+// ---- questions -----------------------------------------------------------------------------
+
+void StoryReader::readQuestions(const json& list) {
+    if (!list.is_array())
+        fail(lineOfKey("", "questions"), "/questions", "expected a list of multiple-choice questions");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const json& entry = list[i];
+        const std::string pointer = "/questions/" + std::to_string(i);
+        const int line = elementPosition("questions", i).line;
+        if (!entry.is_object()) fail(line, pointer, "expected {\"question\": ..., \"choices\": [...], \"answer\": \"A\"}");
+        for (const auto& [key, value] : entry.items())
+            if (key != "question" && key != "choices" && key != "answer" && key != "probes" && key != "gloss")
+                fail(line, pointer + "/" + key,
+                     "unknown field '" + key + "' (known: question, gloss, choices, answer, probes)");
+        StoryQuestion question;
+        question.line = line;
+        if (!entry.contains("question") || !entry["question"].is_string() || entry["question"].get<std::string>().empty())
+            fail(line, pointer + "/question", "each question needs its \"question\" text");
+        question.text = entry["question"].get<std::string>();
+        const json& choices = entry.contains("choices") ? entry["choices"] : json();
+        if (!choices.is_array() || choices.size() < 3 || choices.size() > 4)
+            fail(line, pointer + "/choices", "expected 3 or 4 choices");
+        for (const json& choice : choices) {
+            if (!choice.is_string() || choice.get<std::string>().empty())
+                fail(line, pointer + "/choices", "each choice is non-empty text");
+            question.choices.push_back(choice.get<std::string>());
+        }
+        const std::string lastLetter = choiceLetter(static_cast<int>(question.choices.size()) - 1);
+        if (!entry.contains("answer") || !entry["answer"].is_string() || entry["answer"].get<std::string>().size() != 1)
+            fail(line, pointer + "/answer", "the answer key is the letter of the right choice, \"A\" to \"" + lastLetter + "\"");
+        question.answer = entry["answer"].get<std::string>()[0] - 'A';
+        if (question.answer < 0 || question.answer >= static_cast<int>(question.choices.size()))
+            fail(line, pointer + "/answer",
+                 "answer \"" + entry["answer"].get<std::string>() + "\" is not one of the choices (\"A\" to \"" +
+                     lastLetter + "\")");
+        const json& probes = entry.contains("probes") ? entry["probes"] : json();
+        if (!probes.is_object() || !probes.contains("sentence") || !probes["sentence"].is_number_integer() ||
+            !probes.contains("verb") || !probes["verb"].is_string())
+            fail(line, pointer + "/probes",
+                 "say what the question probes: {\"sentence\": N (1-based), \"verb\": \"ASK\"}");
+        const long long sentence = probes["sentence"].get<long long>();
+        if (sentence < 1 || sentence > static_cast<long long>(story_.sentences.size()))
+            fail(line, pointer + "/probes/sentence",
+                 "sentence " + std::to_string(sentence) + " does not exist (1 to " +
+                     std::to_string(story_.sentences.size()) + ")");
+        question.probeSentence = static_cast<int>(sentence - 1);
+        question.probeVerb = probes["verb"].get<std::string>();
+        const StorySentence& probed = story_.sentences[static_cast<std::size_t>(question.probeSentence)];
+        const bool hasVerb = std::any_of(probed.items.begin(), probed.items.end(), [&](const StoryItem& item) {
+            return item.kind == StoryItemKind::Verb && item.gloss == question.probeVerb;
+        });
+        if (!hasVerb)
+            fail(line, pointer + "/probes/verb",
+                 "sentence " + std::to_string(sentence) + " (\"" + probed.gloss + "\") has no verb " + question.probeVerb);
+        if (entry.contains("gloss")) readQuestionGloss(entry["gloss"], i, question);
+        story_.questions.push_back(std::move(question));
+    }
+}
+
+// Issue 24: the question in gloss, read like a sentence of the story (after all of them: the
+// characters are placed) as signed text.
+void StoryReader::readQuestionGloss(const json& value, std::size_t index, StoryQuestion& question) {
+    const std::string pointer = "/questions/" + std::to_string(index) + "/gloss";
+    const int line = question.line;
+    if (!value.is_string() || value.get<std::string>().empty())
+        fail(line, pointer, "expected the question in gloss, e.g. \"TOM ASK WHO\"");
+    question.gloss = value.get<std::string>();
+    if (question.gloss.find_first_of("\"\\") != std::string::npos)
+        fail(line, pointer, "a question in gloss holds no quotes or backslashes");
+    // The column of its first character: the value's opening quote after "gloss" in the question.
+    TextPosition where{line, 0};
+    const auto found = elementOffsets_.find("questions");
+    if (found != elementOffsets_.end() && index < found->second.size()) {
+        const std::size_t key = source_.text.find("\"gloss\"", found->second[index]);
+        const std::size_t quote = key == std::string::npos ? key : source_.text.find('"', key + 7);
+        if (quote != std::string::npos) where = positionOf(source_, quote);
+    }
+    const bool wasSignedText = signedText_;
+    signedText_ = true;
+    spelledWords_.clear();
+    question.sentence = readSentence(question.gloss, where.line, where.column > 0 ? where.column + 1 : 0, pointer);
+    question.fingerspelled = spelledWords_;
+    signedText_ = wasSignedText;
+}
+
+// parseSignedGloss: the characters of `context` (placed), then one sentence of signed text.
+StorySentence StoryReader::signedGloss(const std::string& gloss, const Story* context, int line, int column,
+                                       const std::string& field, std::vector<std::string>* fingerspelled) {
+    if (context) story_.characters = context->characters;
+    story_.file = source_.file;
+    placed_.assign(story_.characters.size(), true);
+    signedText_ = true;
+    if (gloss.empty()) fail(line, field, "expected signed text in gloss");
+    if (gloss.find_first_of("\"\\") != std::string::npos) fail(line, field, "gloss holds no quotes or backslashes", column);
+    StorySentence sentence = readSentence(gloss, line, column, field);
+    if (fingerspelled) *fingerspelled = spelledWords_;
+    return sentence;
+}
+
+}  // namespace signstim::stimuli::story_detail
+
+namespace signstim::stimuli {
+
+using story_detail::StoryReader;
 
 int Story::characterIndex(std::string_view gloss) const {
     for (std::size_t i = 0; i < characters.size(); ++i)

@@ -9,7 +9,8 @@
 
 namespace signstim::stimuli {
 
-// stimuli/experiment/experiment.js and experiment.css, embedded at build time (cmake/Embed.cmake).
+// stimuli/study/experiment/experiment.js (its four parts joined: stimuli/CMakeLists.txt) and
+// experiment.css, embedded at build time (cmake/Embed.cmake).
 namespace embedded {
 extern const std::string_view experimentScript;
 extern const std::string_view experimentStyleSheet;

@@ -3,6 +3,7 @@
 #include "common/number_format.hpp"
 #include "stimuli/study/question_clips.hpp"
 #include "stimuli/study/study_design.hpp"
+#include "stimuli/study/study_listing_check.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -17,13 +18,11 @@ namespace signstim::stimuli {
 namespace {
 
 using nlohmann::json;
-
-[[noreturn]] void inconsistent(const std::string& what) { throw std::invalid_argument("study listing: " + what); }
-
-std::string count(std::size_t value) { return std::to_string(value); }
-
-// "A", "B", ...: how choices are named to participants, on the sheets and in the CSV.
-std::string choiceLetter(std::size_t choice) { return std::string(1, static_cast<char>('A' + choice)); }
+using exports_detail::checkedParticipant;
+using exports_detail::checkStudy;
+using exports_detail::choiceLetter;
+using exports_detail::count;
+using exports_detail::inconsistent;
 
 std::string lowercase(std::string text) {
     for (char& c : text)
@@ -47,91 +46,6 @@ double durationValue(double seconds) {
     double value = 0.0;
     std::from_chars(text.data(), text.data() + text.size(), value);
     return value;
-}
-
-// ---- consistency of the listing ---------------------------------------------------------
-
-void checkClip(const ListedClip& clip, const std::string& owner) {
-    if (!std::isfinite(clip.durationSeconds) || clip.durationSeconds < 0.0)
-        inconsistent(owner + ": clip '" + clip.video + "' has duration " + formatNumber(clip.durationSeconds) +
-                     " s; expected a finite number of seconds, 0 or more");
-}
-
-// The parts every writer reads: versions, stories with their clips and questions, sentences
-// with their panels, and the group table when it is filled.
-void checkStudy(const StudyListing& listing) {
-    const std::size_t versions = listing.versions.size();
-    // Panels and choices are lettered A..Z.
-    if (versions == 0 || versions > 26) inconsistent(count(versions) + " versions; expected 1 to 26");
-    for (const ListedStory& story : listing.stories) {
-        // One clip per phase-1 version: every version, or the first ones when a version is in phase 2 only.
-        if (story.clips.empty() || story.clips.size() > versions || story.clips.size() != listing.stories.front().clips.size())
-            inconsistent(story.id + ": " + count(story.clips.size()) + " clips for " + count(versions) + " versions");
-        for (const ListedClip& clip : story.clips) checkClip(clip, story.id);
-        for (std::size_t q = 0; q < story.questions.size(); ++q) {
-            const ListedQuestion& question = story.questions[q];
-            const std::string name = story.id + " question " + count(q + 1);
-            if (question.choices.empty() || question.choices.size() > 26)
-                inconsistent(name + ": " + count(question.choices.size()) + " choices; expected 1 to 26");
-            if (question.answer < 0 || static_cast<std::size_t>(question.answer) >= question.choices.size())
-                inconsistent(name + ": answer " + std::to_string(question.answer) + " is not one of its " +
-                             count(question.choices.size()) + " choices (0-based)");
-        }
-    }
-    for (const ListedSentence& sentence : listing.sentences) {
-        if (sentence.panelVersion.size() != likertPanelCount(listing) || sentence.panelVersion.size() > versions)
-            inconsistent(sentence.id + ": " + count(sentence.panelVersion.size()) + " panels for " + count(versions) +
-                         " versions");
-        for (std::size_t version : sentence.panelVersion)
-            if (version >= versions) inconsistent(sentence.id + ": panel shows version " + count(version));
-        checkClip(sentence.clip, sentence.id);
-    }
-    if (!listing.groupVersion.empty()) {
-        if (listing.groupVersion.size() != listing.stories.size())
-            inconsistent("groupVersion has " + count(listing.groupVersion.size()) + " rows for " +
-                         count(listing.stories.size()) + " stories");
-        const std::size_t groups = listing.groupVersion.front().size();
-        for (std::size_t s = 0; s < listing.groupVersion.size(); ++s) {
-            const std::vector<std::size_t>& row = listing.groupVersion[s];
-            if (row.empty() || row.size() != groups)
-                inconsistent("groupVersion row " + count(s) + " has " + count(row.size()) + " groups; row 0 has " +
-                             count(groups));
-            for (std::size_t version : row)
-                if (version >= listing.stories.at(s).clips.size()) inconsistent("groupVersion row " + count(s) + " names version " + count(version));
-        }
-    }
-}
-
-// The participant at `index`, with trials numbered 1, 2, ... in order and every index in
-// range; when the group table is filled, their group exists and each phase-1 trial shows
-// the version the table gives their group.
-const ListedParticipant& checkedParticipant(const StudyListing& listing, std::size_t index) {
-    if (index >= listing.participants.size())
-        inconsistent("participant index " + count(index) + ", but there are " + count(listing.participants.size()) +
-                     " participants");
-    const ListedParticipant& participant = listing.participants[index];
-    const bool haveGroups = !listing.groupVersion.empty();
-    if (haveGroups && participant.group >= listing.groupVersion.front().size())
-        inconsistent(participant.id + ": group " + count(participant.group) + " (0-based) does not exist");
-    for (std::size_t i = 0; i < participant.phase1.size(); ++i) {
-        const ListedPhase1Trial& trial = participant.phase1[i];
-        const std::string name = participant.id + " phase-1 trial " + count(i + 1);
-        if (trial.trial != i + 1) inconsistent(name + " is numbered " + count(trial.trial));
-        if (trial.story >= listing.stories.size()) inconsistent(name + ": story index " + count(trial.story));
-        if (trial.version >= listing.stories[trial.story].clips.size())
-            inconsistent(name + ": version index " + count(trial.version));
-        if (haveGroups && listing.groupVersion[trial.story][participant.group] != trial.version)
-            inconsistent(name + ": " + listing.stories[trial.story].id + " in version " + count(trial.version) +
-                         ", but groupVersion gives group " + count(participant.group) + " version " +
-                         count(listing.groupVersion[trial.story][participant.group]));
-    }
-    for (std::size_t i = 0; i < participant.phase2.size(); ++i) {
-        const ListedPhase2Trial& trial = participant.phase2[i];
-        const std::string name = participant.id + " phase-2 trial " + count(i + 1);
-        if (trial.trial != i + 1) inconsistent(name + " is numbered " + count(trial.trial));
-        if (trial.sentence >= listing.sentences.size()) inconsistent(name + ": sentence index " + count(trial.sentence));
-    }
-    return participant;
 }
 
 // ---- CSV ----------------------------------------------------------------------------------
@@ -231,117 +145,6 @@ void setClipCells(CsvTable& table, const ListedClip& clip) {
     table.set("poster_file", clip.poster);
     table.set("poster_name", fileName(clip.poster));
     table.set("duration_s", durationText(clip.durationSeconds));
-}
-
-// ---- HTML ---------------------------------------------------------------------------------
-
-// Shared by both sheets: plain type that prints well in black and white, no fixed page size
-// (A4 and Letter both fit), and nothing loaded from elsewhere.
-constexpr std::string_view baseCss =
-    "body { font-family: Georgia, 'Times New Roman', serif; font-size: 11pt; line-height: 1.35; color: #000;"
-    " background: #fff; max-width: 46em; margin: 2em auto; padding: 0 1em; }\n"
-    "h1 { font-size: 16pt; margin: 0 0 0.2em; }\n"
-    "h2 { font-size: 13pt; margin: 0 0 0.4em; }\n"
-    "h3 { font-size: 11pt; margin: 0.8em 0 0.3em; }\n"
-    "header { border-bottom: 1px solid #000; margin-bottom: 1.2em; padding-bottom: 0.4em; }\n"
-    ".meta { font-size: 9pt; color: #333; }\n"
-    "@media print {\n"
-    "  @page { margin: 15mm; }\n"
-    "  body { max-width: none; margin: 0; padding: 0; font-size: 10.5pt; }\n"
-    "}\n";
-
-std::string htmlPage(const std::string& title, std::string_view css, const std::string& body) {
-    std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
-    page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-    page += "<title>" + escapeHtml(title) + "</title>\n<style>\n";
-    page += baseCss;
-    page += css;
-    page += "</style>\n</head>\n<body>\n";
-    page += body;
-    page += "</body>\n</html>\n";
-    return page;
-}
-
-constexpr std::string_view questionSheetCss =
-    ".story + .story { margin-top: 2.5em; }\n"
-    ".source { font-size: 9pt; color: #333; margin: 0 0 0.6em; }\n"
-    "ol.gloss { font-family: 'Courier New', Courier, monospace; font-size: 10pt; }\n"
-    "ol.questions > li { margin-bottom: 0.8em; }\n"
-    ".prompt { margin: 0; }\n"
-    ".probe { font-size: 9pt; color: #333; margin: 0; }\n"
-    "ul.choices { list-style: none; margin: 0.2em 0 0; padding-left: 1.2em; }\n"
-    ".letter { display: inline-block; min-width: 1.6em; font-weight: bold; }\n"
-    ".answer { font-weight: bold; }\n"
-    ".answer .mark { border: 1px solid #000; padding: 0 0.3em; margin-left: 0.5em; font-size: 9pt; }\n"
-    ".key { border-top: 1px solid #999; padding-top: 0.3em; }\n"
-    "@media print {\n"
-    "  .story { break-after: page; page-break-after: always; }\n"
-    "  .story:last-of-type { break-after: auto; page-break-after: auto; }\n"
-    "  .story + .story { margin-top: 0; }\n"
-    "  ol.questions > li { break-inside: avoid; page-break-inside: avoid; }\n"
-    "}\n";
-
-std::string questionBlock(const ListedQuestion& question) {
-    std::string html = "<li>\n<p class=\"prompt\">" + escapeHtml(question.text) + "</p>\n";
-    if (!question.probeVerb.empty())
-        html += "<p class=\"probe\">About " + escapeHtml(question.probeVerb) + " in sentence " +
-                count(static_cast<std::size_t>(std::max(question.probeSentence, 0)) + 1) + "</p>\n";
-    html += "<ul class=\"choices\">\n";
-    for (std::size_t c = 0; c < question.choices.size(); ++c) {
-        const bool isAnswer = c == static_cast<std::size_t>(question.answer);
-        html += isAnswer ? "<li class=\"answer\">" : "<li>";
-        html += "<span class=\"letter\">" + choiceLetter(c) + "</span> " + escapeHtml(question.choices[c]);
-        // Marked in words as well as in bold, so a photocopy still shows it.
-        if (isAnswer) html += " <span class=\"mark\">&#10004; answer</span>";
-        html += "</li>\n";
-    }
-    html += "</ul>\n</li>\n";
-    return html;
-}
-
-std::string storySection(const ListedStory& story) {
-    std::string html = "<section class=\"story\" id=\"" + escapeHtml(story.id) + "\">\n";
-    html += "<h2>" + escapeHtml(story.id) + ": " + escapeHtml(story.title) + "</h2>\n";
-    if (!story.file.empty()) html += "<p class=\"source\">" + escapeHtml(story.file) + "</p>\n";
-    html += "<h3>Sentences</h3>\n<ol class=\"gloss\">\n";
-    for (const std::string& sentence : story.sentences) html += "<li>" + escapeHtml(sentence) + "</li>\n";
-    html += "</ol>\n<h3>Questions</h3>\n<ol class=\"questions\">\n";
-    for (const ListedQuestion& question : story.questions) html += questionBlock(question);
-    html += "</ol>\n";
-    if (!story.questions.empty()) {
-        html += "<p class=\"key\">Answer key:";
-        for (std::size_t q = 0; q < story.questions.size(); ++q)
-            html += (q == 0 ? " " : " &middot; ") + count(q + 1) + "&nbsp;" +
-                    choiceLetter(static_cast<std::size_t>(story.questions[q].answer));
-        html += "</p>\n";
-    }
-    html += "</section>\n";
-    return html;
-}
-
-constexpr std::string_view responseSheetCss =
-    ".fill { display: inline-block; min-width: 9em; border-bottom: 1px solid #000; }\n"
-    ".trial { margin: 0 0 1.2em; }\n"
-    ".trial h2 { font-size: 12pt; }\n"
-    ".sentence { font-weight: normal; font-size: 10pt; margin-left: 0.8em; }\n"
-    "table.scale { border-collapse: separate; border-spacing: 1.2mm 1mm; }\n"
-    "table.scale th { text-align: left; font-weight: bold; padding-right: 3mm; white-space: nowrap; }\n"
-    ".box { display: inline-block; width: 8mm; height: 8mm; line-height: 8mm; border: 1px solid #000;"
-    " border-radius: 50%; text-align: center; font-size: 9pt; }\n"
-    "@media print {\n"
-    "  .trial { break-inside: avoid; page-break-inside: avoid; }\n"
-    "}\n";
-
-std::string ratingTable(const StudyListing& listing) {
-    std::string html = "<table class=\"scale\">\n";
-    for (std::size_t panel = 0; panel < likertPanelCount(listing); ++panel) {
-        html += "<tr><th scope=\"row\">Panel " + panelLabel(panel) + "</th>";
-        for (int rating = listing.likertMinimum; rating <= listing.likertMaximum; ++rating)
-            html += "<td><span class=\"box\">" + std::to_string(rating) + "</span></td>";
-        html += "</tr>\n";
-    }
-    html += "</table>\n";
-    return html;
 }
 
 }  // namespace
@@ -585,40 +388,6 @@ std::string overviewCsv(const StudyListing& listing) {
             table.set("group_" + count(group + 1), listing.versions[listing.groupVersion[s][group]]);
     }
     return table.text();
-}
-
-std::string questionSheetHtml(const StudyListing& listing) {
-    checkStudy(listing);
-    std::string body = "<header>\n<h1>" + escapeHtml(listing.title) + "</h1>\n";
-    body += "<p>Comprehension questions and answer key &middot; for the experimenter</p>\n";
-    body += "<p class=\"meta\">" + count(listing.stories.size()) + " stories &middot; design " +
-            escapeHtml(listing.designHash) + " &middot; seed " + std::to_string(listing.seed) + " &middot; signstim " +
-            escapeHtml(listing.toolVersion) + "</p>\n</header>\n";
-    for (const ListedStory& story : listing.stories) body += storySection(story);
-    return htmlPage(listing.title + " - questions and answer key", questionSheetCss, body);
-}
-
-std::string likertResponseSheetHtml(const StudyListing& listing, std::size_t participantIndex) {
-    checkStudy(listing);
-    const ListedParticipant& participant = checkedParticipant(listing, participantIndex);
-    if (listing.likertMinimum > listing.likertMaximum || listing.likertMaximum - listing.likertMinimum > 100)
-        inconsistent("rating scale " + std::to_string(listing.likertMinimum) + " to " +
-                     std::to_string(listing.likertMaximum));
-
-    std::string body = "<header>\n<h1>" + escapeHtml(listing.title) + "</h1>\n";
-    body += "<p>Ratings &middot; participant <strong>" + escapeHtml(participant.id) +
-            "</strong> &middot; date <span class=\"fill\"></span></p>\n";
-    body += "<p>After each video, circle one number for every panel: " + std::to_string(listing.likertMinimum) +
-            " = lowest, " + std::to_string(listing.likertMaximum) + " = highest.</p>\n</header>\n";
-    // Deliberately nothing per trial but its number and sentence id: the panel code and the
-    // clip's file name ("likert-05_panels-VPAU.mp4") would tell which version is where.
-    for (const ListedPhase2Trial& trial : participant.phase2) {
-        body += "<section class=\"trial\">\n<h2>Trial " + count(trial.trial) + "<span class=\"sentence\">" +
-                escapeHtml(listing.sentences[trial.sentence].id) + "</span></h2>\n";
-        body += ratingTable(listing);
-        body += "</section>\n";
-    }
-    return htmlPage(listing.title + " - ratings - " + participant.id, responseSheetCss, body);
 }
 
 }  // namespace signstim::stimuli

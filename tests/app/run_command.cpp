@@ -28,6 +28,14 @@ CommandResult runSignstim(const std::string& arguments, Capture capture, const s
                     capture);
 }
 
+CommandResult writeSyntheticRecording(const std::filesystem::path& file, const std::string& size, int rate, double seconds,
+                                      int hue) {
+    std::filesystem::create_directories(file.parent_path());
+    return runShell("ffmpeg -v error -y -f lavfi -i 'testsrc2=size=" + size + ":rate=" + std::to_string(rate) +
+                    ":duration=" + std::to_string(seconds) + ",hue=h=" + std::to_string(hue) +
+                    "' -c:v libx264 -pix_fmt yuv420p " + shellQuote(file.string()) + " </dev/null");
+}
+
 std::string shellQuote(const std::string& text) {
     std::string quoted = "'";
     for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);

@@ -35,4 +35,11 @@ std::filesystem::path freshDir(const std::filesystem::path& root, const std::str
 // `text` as one shell word: 'text', with any ' inside escaped.
 std::string shellQuote(const std::string& text);
 
+// A SYNTHETIC recording for the human-video tests, no person: `seconds` of ffmpeg's procedural
+// test pattern (lavfi testsrc2) at `size` ("96x72") and `rate` fps, its hue turned by `hue`
+// degrees so that each file differs, as H.264 yuv420p in `file` (its folder created). What
+// ffmpeg said; status 0: written.
+CommandResult writeSyntheticRecording(const std::filesystem::path& file, const std::string& size, int rate, double seconds,
+                                      int hue);
+
 }  // namespace signstim::test

@@ -30,10 +30,7 @@ fs::path freshDir(const std::string& name) {
 
 // A synthetic "recording" (ffmpeg's test pattern, hue-shifted so each differs).
 void syntheticClip(const fs::path& file, double seconds, int hue) {
-    fs::create_directories(file.parent_path());
-    const auto r = runShell("ffmpeg -v error -y -f lavfi -i 'testsrc2=size=96x72:rate=25:duration=" + std::to_string(seconds) +
-                            ",hue=h=" + std::to_string(hue) + "' -c:v libx264 -pix_fmt yuv420p " +
-                            shellQuote(file.string()) + " </dev/null");
+    const auto r = signstim::test::writeSyntheticRecording(file, "96x72", 25, seconds, hue);
     ASSERT_EQ(r.status, 0) << r.output;
 }
 

@@ -1,7 +1,8 @@
 // `signstim study` with a human-video version (issue 24 §2) as a lab runs it: its recordings are
 // probed (a missing or broken one refused naming the file and the pattern), normalised to the
 // study's size and rate, listed in the manifest with their sources' hashes, verified, resumed
-// (a changed recording renders its own unit again, nothing else), and sharded.
+// (a changed recording renders its own unit again, nothing else, and is the only one probed
+// again), and sharded.
 // The "recordings" are SYNTHETIC: ffmpeg's procedural test patterns (lavfi testsrc2), no person.
 #include "tests/app/run_command.hpp"
 
@@ -30,10 +31,7 @@ fs::path freshDir(const std::string& name) {
 
 // A synthetic clip (ffmpeg's test pattern, hue-shifted so each clip differs).
 void syntheticClip(const fs::path& file, const std::string& size, int rate, double seconds, int hue) {
-    fs::create_directories(file.parent_path());
-    const auto r = runShell("ffmpeg -v error -y -f lavfi -i 'testsrc2=size=" + size + ":rate=" + std::to_string(rate) +
-                            ":duration=" + std::to_string(seconds) + ",hue=h=" + std::to_string(hue) +
-                            "' -c:v libx264 -pix_fmt yuv420p " + shellQuote(file.string()) + " </dev/null");
+    const auto r = signstim::test::writeSyntheticRecording(file, size, rate, seconds, hue);
     ASSERT_EQ(r.status, 0) << r.output;
 }
 
@@ -133,11 +131,30 @@ TEST(StudyHumanCli, RecordingsAreNormalisedHashedVerifiedAndAChangedOneRendersOn
     EXPECT_NE(readFile(out / "participants" / "P01" / "P01_conditions.csv").find("_version-human.mp4"), std::string::npos);
     EXPECT_NE(readFile(out / "index.html").find("story-02_version-human.mp4"), std::string::npos);
 
-    // Nothing changed: nothing rendered. One recording replaced: its unit only.
+    // Nothing changed: nothing rendered, and no recording probed again (app/study_human.hpp: the
+    // probes are kept in the folder by content), shown with an ffprobe on PATH that always fails.
+    EXPECT_TRUE(fs::is_regular_file(out / ".signstim" / "human-probes.json"));
+    const fs::path failingProbe = dir / "failing-ffprobe";
+    fs::create_directories(failingProbe);
+    std::ofstream(failingProbe / "ffprobe") << "#!/bin/sh\necho 'a stand-in ffprobe that always fails' >&2\nexit 1\n";
+    fs::permissions(failingProbe / "ffprobe", fs::perms::owner_all);
+    const std::string withFailingProbe = "PATH=" + shellQuote(failingProbe.string()) + ":\"$PATH\"";
+    const std::string manifest = readFile(out / "manifest.json");
     const auto again = runSignstim("study " + shellQuote(file.string()) + " --scenes " + shellQuote(kScenes) + " --out " +
-                                   shellQuote(out.string()));
+                                       shellQuote(out.string()),
+                                   Capture::StdoutAndStderr, withFailingProbe);
+    EXPECT_EQ(again.status, 0) << again.output;
     EXPECT_NE(again.output.find("0 of 6 units rendered, 6 already complete"), std::string::npos) << again.output;
+    EXPECT_EQ(readFile(out / "manifest.json"), manifest);  // the kept probes say what the fresh ones said
     syntheticClip(dir / "human" / "synthetic-story-02.mp4", "96x72", 25, 2.5, 200);
+    // The replaced recording is probed again (and, with the failing ffprobe, refused), the others
+    // not: the error names it, not story-01's recording, which is probed first.
+    const auto probedAgain = runSignstim("study " + shellQuote(file.string()) + " --scenes " + shellQuote(kScenes) +
+                                             " --out " + shellQuote(out.string()),
+                                         Capture::StdoutAndStderr, withFailingProbe);
+    EXPECT_EQ(probedAgain.status, 2) << probedAgain.output;
+    EXPECT_NE(probedAgain.output.find("synthetic-story-02.mp4: not a video ffmpeg can read"), std::string::npos)
+        << probedAgain.output;
     const auto changed = runSignstim("study " + shellQuote(file.string()) + " --scenes " + shellQuote(kScenes) + " --out " +
                                      shellQuote(out.string()));
     EXPECT_NE(changed.output.find("1 of 6 units rendered, 5 already complete"), std::string::npos) << changed.output;

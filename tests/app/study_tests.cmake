@@ -42,3 +42,7 @@ signstim_add_test(signstim_app_study_done_when_tests
   SOURCES study_done_when_cli_test.cpp
   LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
 add_dependencies(signstim_app_study_done_when_tests signstim)
+# The probes of a study's recordings kept in its folder: probed once per content (a stand-in prober).
+signstim_add_test(signstim_app_study_human_probe_cache_tests
+  SOURCES study_human_probe_cache_test.cpp
+  LIBS signstim_app)

@@ -7,6 +7,7 @@
 #include "stimuli/json_source.hpp"
 #include "stimuli/story/story.hpp"
 #include "stimuli/verbs/verbs.hpp"
+#include "tests/stimuli/story_vocabulary.hpp"
 
 #include <gtest/gtest.h>
 
@@ -157,17 +158,7 @@ TEST(TextFields, ControlCharactersInChoicesAndKeysAreRefusedButTabAndNewlineAreN
 
 // ---- stories -----------------------------------------------------------------------------
 
-const VerbLibrary& verbs() {
-    static const VerbLibrary library = loadVerbLibrary(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/verbs.json");
-    return library;
-}
-
-StoryVocabulary vocabulary() {
-    StoryVocabulary v;
-    v.verbs = &verbs();
-    v.signs = {"BOOK"};
-    return v;
-}
+StoryVocabulary vocabulary() { return test::storyVocabulary({"BOOK"}); }
 
 std::string storyWith(const std::string& sentences) {
     return "{\n  \"format\": \"signstim-story\",\n  \"version\": 1,\n  \"title\": \"Synthetic\",\n"

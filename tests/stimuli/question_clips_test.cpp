@@ -11,6 +11,7 @@
 #include "stimuli/study/study_exports.hpp"
 #include "stimuli/study/study_folder.hpp"
 #include "tests/stimuli/review_page_fixture.hpp"
+#include "tests/stimuli/story_vocabulary.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,17 +22,7 @@ using namespace signstim::stimuli;
 
 namespace {
 
-const VerbLibrary& verbs() {
-    static const VerbLibrary library = loadVerbLibrary(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/verbs.json");
-    return library;
-}
-
-StoryVocabulary vocabulary() {
-    StoryVocabulary v;
-    v.verbs = &verbs();
-    v.signs = {"WHO", "WHAT", "HOMEWORK", "HELP", "TEACHER"};
-    return v;
-}
+StoryVocabulary vocabulary() { return test::storyVocabulary({"WHO", "WHAT", "HOMEWORK", "HELP", "TEACHER"}); }
 
 // A story whose one question carries `gloss` (written on line 12 of the file).
 std::string storyWithQuestion(const std::string& gloss) {

@@ -4,6 +4,7 @@
 #include "stimuli/story/lexicon.hpp"
 #include "stimuli/story/story.hpp"
 #include "stimuli/verbs/verbs.hpp"
+#include "tests/stimuli/story_vocabulary.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,15 +16,11 @@
 namespace signstim::stimuli {
 namespace {
 
-const VerbLibrary& verbs() {
-    static const VerbLibrary library = loadVerbLibrary(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/verbs.json");
-    return library;
-}
+using test::sceneVerbs;
+using test::storyVocabulary;
 
 StoryVocabulary vocabulary() {
-    StoryVocabulary v;
-    v.verbs = &verbs();
-    v.signs = {"STUDENT", "TEACHER", "HOMEWORK", "YESTERDAY", "BOOK", "FRIEND", "FINISH"};
+    StoryVocabulary v = storyVocabulary({"STUDENT", "TEACHER", "HOMEWORK", "YESTERDAY", "BOOK", "FRIEND", "FINISH"});
     v.canFingerspell = [](char c) { return c != 'Q'; };  // a library without Q, to test the check
     return v;
 }
@@ -221,7 +218,7 @@ TEST(DefaultStories, TwelveStoriesUseEveryVerbInAtLeastThreeWithFourQuestionsEac
     const HandshapeLibrary shapes = loadHandshapes(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/handshapes.json", model);
     const Lexicon lexicon = loadLexicon(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/lexicon", shapes, model);
     StoryVocabulary any;
-    any.verbs = &verbs();
+    any.verbs = &sceneVerbs();
     any.signs = lexicon.glosses();
     any.canFingerspell = [&](char letter) {
         return shapes.find(letter == 'J' ? "I" : letter == 'Z' ? "1" : std::string(1, letter)) != nullptr;
@@ -243,8 +240,8 @@ TEST(DefaultStories, TwelveStoriesUseEveryVerbInAtLeastThreeWithFourQuestionsEac
         for (const StoryCharacter& c : story.characters)
             if (!c.nameSign.empty()) signs.insert(c.nameSign);
     }
-    EXPECT_EQ(storiesWithVerb.size(), verbs().verbs.size());
-    for (const VerbDefinition& verb : verbs().verbs)
+    EXPECT_EQ(storiesWithVerb.size(), sceneVerbs().verbs.size());
+    for (const VerbDefinition& verb : sceneVerbs().verbs)
         EXPECT_GE(storiesWithVerb[verb.name].size(), 3u) << verb.name;
     EXPECT_GE(signs.size(), 60u);
 }
@@ -266,15 +263,15 @@ TEST(DefaultStories, EveryStoryBuildsInAllFourVersionsWithEqualSlots) {
     const hand::HandModel model = hand::buildHandModel();
     const HandshapeLibrary shapes = loadHandshapes(scenes + "/handshapes.json", model);
     const Lexicon lexicon = loadLexicon(scenes + "/lexicon", shapes, model);
-    const TrainedVerbModels models = loadVerbModels(scenes + "/models/verb_models.json", verbs());
+    const TrainedVerbModels models = loadVerbModels(scenes + "/models/verb_models.json", sceneVerbs());
     StoryVocabulary vocabulary;
-    vocabulary.verbs = &verbs();
+    vocabulary.verbs = &sceneVerbs();
     vocabulary.signs = lexicon.glosses();
     TimelineSources sources;
     sources.lexicon = &lexicon;
     sources.shapes = &shapes;
     sources.verbs = [&](const std::string& verb, VerbVersion version, double subject, double object, int, int) {
-        return synthesizeVerb(VerbSources{&verbs(), &models, scenes + "/animator", &shapes}, verb, version, subject, object);
+        return synthesizeVerb(VerbSources{&sceneVerbs(), &models, scenes + "/animator", &shapes}, verb, version, subject, object);
     };
     for (int n = 1; n <= 12; ++n) {
         char name[64];
