@@ -84,6 +84,9 @@ struct NotationPart {
     std::string baseHandshape;
     glm::dvec3 baseFingers{0.0, 0.0, 1.0}, basePalm{0.0, 1.0, 0.0};
     NotationPlace baseAt;
+    // The base hand carried by the dominant hand's path (HELP: the palm lifts the fist): it keeps
+    // its place relative to the dominant hand instead of holding still.
+    bool baseCarried = false;
     std::vector<NotationContact> contacts;
 };
 

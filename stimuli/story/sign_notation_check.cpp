@@ -359,13 +359,25 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         if (!sign.contact.hands) add("hands apart", closest >= kHandsApartMm, format("palms at least %.0f mm apart", closest));
         if (anyMirrored) add("hands mirrored", worst < 0.5, format("%.2f mm from the mirror image at worst", worst));
         if (anyBase) {
-            double moved = 0.0;
-            for (std::size_t i = 0; i < sign.strokes.size(); ++i)
-                if (!n.parts[i].baseHandshape.empty())
-                    for (double t = sign.strokes[i].startSeconds; t <= sign.strokes[i].endSeconds; t += kSampleSeconds)
-                        moved = std::max(moved, glm::distance(sampleAt(tracks[1], t).pose.positionMm,
-                                                              sampleAt(tracks[1], sign.strokes[i].startSeconds).pose.positionMm));
-            add("base hand still", moved < 0.5, format("moves %.2f mm", moved));
+            // A still base hand holds its place; a carried one (HELP) keeps its place relative to
+            // the dominant hand (its offset varies by < 0.5 mm).
+            double moved = 0.0, drift = 0.0;
+            bool still = false, carried = false;
+            for (std::size_t i = 0; i < sign.strokes.size(); ++i) {
+                if (n.parts[i].baseHandshape.empty()) continue;
+                const double t0 = sign.strokes[i].startSeconds;
+                const glm::dvec3 offset0 = sampleAt(tracks[1], t0).pose.positionMm - sampleAt(tracks[0], t0).pose.positionMm;
+                for (double t = t0; t <= sign.strokes[i].endSeconds; t += kSampleSeconds) {
+                    const glm::dvec3 left = sampleAt(tracks[1], t).pose.positionMm;
+                    if (n.parts[i].baseCarried)
+                        drift = std::max(drift, glm::distance(left - sampleAt(tracks[0], t).pose.positionMm, offset0));
+                    else
+                        moved = std::max(moved, glm::distance(left, sampleAt(tracks[1], t0).pose.positionMm));
+                }
+                (n.parts[i].baseCarried ? carried : still) = true;
+            }
+            if (still || !carried) add("base hand still", moved < 0.5, format("moves %.2f mm", moved));
+            if (carried) add("base hand carried", drift < 0.5, format("%.2f mm from its place by the dominant hand at worst", drift));
         }
     }
     std::string relations;

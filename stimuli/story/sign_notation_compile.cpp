@@ -335,7 +335,14 @@ private:
                 if (oscillates) applyLocal(p, k, opposite, start, pose, shape);
                 if (h == 1) {
                     if (relation == HandRelation::Base) {
-                        key(h, key0.t, *base, baseShape, false);
+                        if (!p.baseCarried) {
+                            key(h, key0.t, *base, baseShape, false);
+                            continue;
+                        }
+                        // Carried (HELP): the base hand moves with the dominant hand's path.
+                        HandPose carried = *base;
+                        carried.positionMm += position - start;
+                        key(h, key0.t, carried, baseShape, key0.via);
                         continue;
                     }
                     if (relation == HandRelation::Symmetric) {

@@ -202,11 +202,15 @@ private:
             if (!part.contains("base")) return finishPart(part, p, out);
             if (!part["base"].is_object()) fail(p + "/base", "expected {\"handshape\", \"fingers\", \"palm\", \"at\"}");
             const json& b = part["base"];
-            only(b, p + "/base", {"handshape", "fingers", "palm", "at", "offset"});
+            only(b, p + "/base", {"handshape", "fingers", "palm", "at", "offset", "carried"});
             out.baseHandshape = shape(b, p + "/base", "handshape", true);
             orientation(b, p + "/base", "fingers", "palm", out.baseFingers, out.basePalm, true);
             out.baseAt = place(b, p + "/base", "at", "offset");
             if (out.baseAt.onOtherHand()) fail(p + "/base/at", "the base hand is placed on the body or in neutral space");
+            if (b.contains("carried")) {
+                if (!b["carried"].is_boolean()) fail(p + "/base/carried", "expected true or false");
+                out.baseCarried = b["carried"].get<bool>();
+            }
         } else if (part.contains("base")) {
             fail(p + "/base", "only a part with \"hands\": \"base\" (its own or the sign's) has a base hand");
         }

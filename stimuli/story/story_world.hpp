@@ -41,7 +41,7 @@ struct StoryWorld {
     stimuli::TimelineSources sources(const stimuli::Story& story) const;
 
     // For --check: one line per sign or location of the default lexicon the lab's lexicon
-    // overrides ("lexicon: lab.json:12: sign TEACHER overrides scenes/lexicon/signs-b.json:131").
+    // overrides ("lexicon: lab.json:12: sign TEACHER overrides scenes/lexicon/notation-lexb-b.json:161").
     std::vector<std::string> lexiconOverrideNotes() const;
     // For --check: one line per character fingerspelled because no sign has its gloss and the
     // story does not say the letters on purpose ("spelled").

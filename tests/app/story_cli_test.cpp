@@ -66,7 +66,7 @@ const char* kNewPlaces = R"json({
   ]
 })json";
 
-// A lab's lexicon: TUTOR (new) and MY (the starter's, slower).
+// A lab's lexicon: TUTOR (new) and MY (the default lexicon's, slower).
 const char* kLabLexicon = R"({"format": "signstim-lexicon", "version": 1, "signs": [
   {"gloss": "TUTOR", "hands": ["right"], "keyframes": {"right": [
     {"time": 0, "at": "chest", "offset": [0, 0, 70], "touch": "palm", "fingers": [-0.4, 1, 0], "palm": [0, 0, -1], "handshape": "open-B"},

@@ -242,5 +242,35 @@ TEST(SignNotationParts, TheNewPlacesAreFoundAndCodedAsAslLexCodesThem) {
     }
 }
 
+// Issue 22 (HELP): a carried base hand moves with the dominant hand's path, keeping its place
+// against it (the palm lifts the fist), where a plain base hand holds still.
+TEST(SignNotationParts, ACarriedBaseHandMovesWithTheDominantHand) {
+    const std::string part = R"({"hands": "base", "parts": [{"seconds": 0.5, "handshape": "A", "fingers": "forward",
+        "palm": "left", "at": "hand:palm", "offset": [0, 25, 0], "touch": "ulnar",
+        "path": {"shape": "straight", "direction": "up", "size": 100},
+        "base": {"handshape": "B", "fingers": "forward", "palm": "up", "at": "neutral"CARRIED},
+        "contact": [{"when": "start"}]}]})";
+    const auto with = [&](const std::string& carried) {
+        std::string text = part;
+        text.replace(text.find("CARRIED"), 7, carried);
+        return parse(lexiconWith(text));
+    };
+    const Lexicon carried = with(R"(, "carried": true)");
+    const LexiconSign& sign = carried.signs.front();
+    const std::vector<TimelineKey> right = track(sign, 0), left = track(sign, 1);
+    const double end = right.back().timeSeconds;
+    const glm::dvec3 rise = positionAt(left, end) - positionAt(left, 0.0);
+    EXPECT_NEAR(rise.y, 100.0, 1.0) << "the base hand rises with the fist";
+    EXPECT_NEAR(glm::distance(positionAt(left, 0.5 * end) - positionAt(right, 0.5 * end), positionAt(left, 0.0) - positionAt(right, 0.0)), 0.0, 0.5);
+    const std::vector<NotationCheck> checks = checkSignNotation(sign, carried, shapes(), model());
+    ASSERT_NE(findCheck(checks, "base hand carried"), nullptr);
+    EXPECT_TRUE(findCheck(checks, "base hand carried")->ok) << findCheck(checks, "base hand carried")->detail;
+    EXPECT_EQ(findCheck(checks, "base hand still"), nullptr);
+
+    const Lexicon still = with("");
+    const std::vector<TimelineKey> held = track(still.signs.front(), 1);
+    EXPECT_LT(glm::distance(positionAt(held, end), positionAt(held, 0.0)), 1e-6) << "without \"carried\" the base hand holds still";
+}
+
 }  // namespace
 }  // namespace signstim::stimuli
