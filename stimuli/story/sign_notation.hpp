@@ -25,7 +25,9 @@
 
 namespace signstim::stimuli {
 
-enum class HandRelation { One, Symmetric, Mirrored, Alternating, Base };
+// Together: both hands move as one rigid unit (BABY's cradled arms, LOVE's crossed fists): the
+// left hand starts where `base` puts it and keeps its pose relative to the right hand.
+enum class HandRelation { One, Symmetric, Mirrored, Alternating, Base, Together };
 enum class PathShape { None, Straight, Arc, Circle, Zigzag, Wavy };
 enum class RepeatReturn { Retrace, Lifted, Continue, Trill };
 enum class LocalMovement { None, Wiggle, Flick, Bend, OpenClose, Twist, Nod, Rub };
@@ -84,7 +86,16 @@ struct NotationPart {
     std::string baseHandshape;
     glm::dvec3 baseFingers{0.0, 0.0, 1.0}, basePalm{0.0, 1.0, 0.0};
     NotationPlace baseAt;
+    // A base hand with its own path ("base": {"path": {"direction", "size"}}): it moves this far
+    // over each stroke, in step with the dominant hand, and back on its returns (RIGHT, HARD,
+    // MARRY: both hands come together). Zero: a still base hand.
+    glm::dvec3 baseMoveMm{0.0};
     std::vector<NotationContact> contacts;
+    // Whether both hands move (Battison 1978's symmetry condition applies: ASL-LEX codes such a
+    // sign SymmetricalOrAlternating, or DominanceViolation when the handshapes differ).
+    bool bothHandsMove() const {
+        return hands == HandRelation::Together || (hands == HandRelation::Base && glm::length(baseMoveMm) > 0.0);
+    }
 };
 
 // Whether the part's local movement oscillates over a still hand: a wiggle, twist, nod or rub,

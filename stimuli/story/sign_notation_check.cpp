@@ -126,10 +126,15 @@ std::vector<AslLexCode> deriveAslLexCode(const SignNotation& n, const HandshapeL
         AslLexCode c;
         c.handshape = labelOf(shapes, p.handshape);
         const bool base = p.hands == HandRelation::Base && !p.baseHandshape.empty();
+        const bool sameShape = base && labelOf(shapes, p.baseHandshape) == c.handshape;
         if (p.hands == HandRelation::One || (p.hands == HandRelation::Base && !base)) c.signType = "OneHanded";
         else if (!base) c.signType = "SymmetricalOrAlternating";
-        else c.signType = labelOf(shapes, p.baseHandshape) == c.handshape ? "AsymmetricalSameHandshape" : "AsymmetricalDifferentHandshape";
-        if (base) c.nondominant = labelOf(shapes, p.baseHandshape);
+        // Both hands move (together, or a base hand with its own path): Battison's (1978)
+        // symmetry condition, which a different handshape violates (ASL-LEX: DominanceViolation).
+        else if (p.bothHandsMove()) c.signType = sameShape ? "SymmetricalOrAlternating" : "DominanceViolation";
+        else c.signType = sameShape ? "AsymmetricalSameHandshape" : "AsymmetricalDifferentHandshape";
+        if (base && p.bothHandsMove() && !sameShape) c.nondominant = "DominanceViolation";
+        else if (base) c.nondominant = labelOf(shapes, p.baseHandshape);
         else if (p.hands != HandRelation::One && p.hands != HandRelation::Base) c.nondominant = c.handshape;
         switch (p.path) {
             case PathShape::None: c.movement = "None"; break;
@@ -143,7 +148,10 @@ std::vector<AslLexCode> deriveAslLexCode(const SignNotation& n, const HandshapeL
         // ASL-LEX codes where the hand is at onset; a sign that touches, where it touches.
         // Hands that touch each other without a base hand (MORE, FAMILY) touch in neutral
         // space, as ASL-LEX codes them.
-        const bool handsMeet = !p.contacts.empty() && p.hands != HandRelation::Base && p.contacts.front().at.rfind("hand:", 0) == 0;
+        // So do two moving hands that touch (no hand is the other's still base).
+        const std::string& first = p.contacts.empty() ? std::string() : p.contacts.front().at;
+        const bool onOther = first.rfind("hand:", 0) == 0 || first.rfind("arm:", 0) == 0;
+        const bool handsMeet = onOther && (p.bothHandsMove() || (p.hands != HandRelation::Base && first.rfind("hand:", 0) == 0));
         const auto [major, minor] = handsMeet         ? std::pair<std::string, std::string>{"Neutral", "Neutral"}
                                     : p.contacts.empty() ? aslLexLocation(p.at.name, glm::length(p.at.offsetMm))
                                                          : aslLexLocation(p.contacts.front().at, glm::length(p.contacts.front().offsetMm));
@@ -234,7 +242,7 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         double best = 1e18;
         for (const auto& [name, point] : lexicon.locations)
             if (glm::distance(point, touch) < best) best = glm::distance(point, touch), nearest = name;
-        if (p.hands == HandRelation::Base && !p.baseHandshape.empty())
+        if (p.hands == HandRelation::Base && !p.baseHandshape.empty() && !p.bothHandsMove())
             for (const char* name : {"hand:palm", "hand:back", "hand:heel", "hand:radial", "hand:ulnar", "hand:fingertips",
                                      "hand:thumb", "hand:index", "hand:middle", "hand:ring", "hand:little",
                                      "hand:finger-back", "hand:finger-front", "arm:wrist", "arm:wrist-front", "arm:forearm",
@@ -317,6 +325,8 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
     for (std::size_t k = 0; k + 1 < sign.contactEvents.size(); ++k) {
         const ContactEvent &a = sign.contactEvents[k], &b = sign.contactEvents[k + 1];
         if (a.at != b.at || a.by != b.by || a.part != b.part || b.timeSeconds - a.timeSeconds < 1e-3) continue;
+        // Hands moving together keep their touch (BABY's arms rest on each other as they rock).
+        if (n.parts[static_cast<std::size_t>(a.part)].hands == HandRelation::Together) continue;
         const double t = 0.5 * (a.timeSeconds + b.timeSeconds);
         std::optional<glm::dvec3> target = placePoint(t, a.at);
         if (!target) continue;
@@ -328,10 +338,11 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
     // Two hands that never touch stay apart; the relation holds at every sample.
     if (tracks.size() == 2) {
         // The relation holds inside its own parts' strokes (a compound changes it).
-        bool anyMirrored = false, anyBase = false;
+        bool anyMirrored = false, anyBase = false, anyTogether = false;
         for (const NotationPart& p : n.parts) {
             anyMirrored = anyMirrored || p.hands == HandRelation::Mirrored;
-            anyBase = anyBase || p.hands == HandRelation::Base;
+            anyBase = anyBase || (p.hands == HandRelation::Base && !p.bothHandsMove());
+            anyTogether = anyTogether || p.hands == HandRelation::Together;
         }
         // A part entered from another relation: the hands arrive from places that are no mirror
         // images, and the pass through the part's first key carries that in (sampleTrack), so
@@ -361,11 +372,28 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         if (anyBase) {
             double moved = 0.0;
             for (std::size_t i = 0; i < sign.strokes.size(); ++i)
-                if (!n.parts[i].baseHandshape.empty())
+                if (!n.parts[i].baseHandshape.empty() && !n.parts[i].bothHandsMove())
                     for (double t = sign.strokes[i].startSeconds; t <= sign.strokes[i].endSeconds; t += kSampleSeconds)
                         moved = std::max(moved, glm::distance(sampleAt(tracks[1], t).pose.positionMm,
                                                               sampleAt(tracks[1], sign.strokes[i].startSeconds).pose.positionMm));
             add("base hand still", moved < 0.5, format("moves %.2f mm", moved));
+        }
+        if (anyTogether) {
+            // One rigid unit: the left palm centre and fingertips keep their place in the right
+            // hand's frame (as sampled, between keys too).
+            double drift = 0.0;
+            for (std::size_t i = 0; i < sign.strokes.size(); ++i) {
+                if (n.parts[i].hands != HandRelation::Together) continue;
+                const auto relative = [&](double t, const char* point) {
+                    const Sampled r = sampleAt(tracks[0], t), l = sampleAt(tracks[1], t);
+                    const glm::dvec3 at = handPointInSpace(l.pose, *handPointMm(model, l.controls, hand::Side::Left, point));
+                    return glm::inverse(r.pose.orientation) * (at - r.pose.positionMm);
+                };
+                for (double t = sign.strokes[i].startSeconds; t <= sign.strokes[i].endSeconds; t += kSampleSeconds)
+                    for (const char* point : {"palm", "fingertips"})
+                        drift = std::max(drift, glm::distance(relative(t, point), relative(sign.strokes[i].startSeconds, point)));
+            }
+            add("hands rigid", drift < 0.5, format("the left hand moves %.2f mm in the right hand's frame at worst", drift));
         }
     }
     std::string relations;

@@ -52,7 +52,8 @@ private:
                                                                    {"symmetric", HandRelation::Symmetric},
                                                                    {"mirrored", HandRelation::Mirrored},
                                                                    {"alternating", HandRelation::Alternating},
-                                                                   {"base", HandRelation::Base}};
+                                                                   {"base", HandRelation::Base},
+                                                                   {"together", HandRelation::Together}};
         return choose(relations, text(object, p, "hands", ""), p + "/hands");
     }
 
@@ -196,19 +197,33 @@ private:
             if (out.repeat > 1 && out.path == PathShape::None)
                 fail(rp + "/count", "repeats a path: give one (\"path\"), or repeat a local movement with its \"count\"");
         }
-        if (relation == HandRelation::Base) {
+        if (relation == HandRelation::Together && !part.contains("base"))
+            fail(p + "/base", "hands moving \"together\" name the left hand's start: {\"handshape\", \"fingers\", \"palm\", \"at\"}");
+        if (relation == HandRelation::Base || relation == HandRelation::Together) {
             // A part without one (the first part of HOMEWORK, one-handed HOME) has the base hand
             // wait where the next part needs it.
             if (!part.contains("base")) return finishPart(part, p, out);
             if (!part["base"].is_object()) fail(p + "/base", "expected {\"handshape\", \"fingers\", \"palm\", \"at\"}");
             const json& b = part["base"];
-            only(b, p + "/base", {"handshape", "fingers", "palm", "at", "offset"});
+            only(b, p + "/base", {"handshape", "fingers", "palm", "at", "offset", "path"});
+            if (b.contains("path")) {
+                const std::string bp = p + "/base/path";
+                if (relation == HandRelation::Together) fail(bp, "hands moving \"together\" follow the right hand's path; the left has none of its own");
+                const json& path = b["path"];
+                if (!path.is_object()) fail(bp, "expected {\"shape\": \"straight\", \"direction\": ..., \"size\": mm}");
+                only(path, bp, {"shape", "direction", "size"});
+                if (text(path, bp, "shape", "straight") != "straight") fail(bp + "/shape", "a base hand's own path is \"straight\"");
+                if (!path.contains("direction")) fail(bp + "/direction", "give the base hand's direction (\"right\", [x, y, z])");
+                const double size = number(path, bp, "size", kSizeMm, 0.0);
+                if (size < 1.0) fail(bp + "/size", "a base hand's path needs its size in mm");
+                out.baseMoveMm = direction(path["direction"], bp + "/direction") * size;
+            }
             out.baseHandshape = shape(b, p + "/base", "handshape", true);
             orientation(b, p + "/base", "fingers", "palm", out.baseFingers, out.basePalm, true);
             out.baseAt = place(b, p + "/base", "at", "offset");
             if (out.baseAt.onOtherHand()) fail(p + "/base/at", "the base hand is placed on the body or in neutral space");
         } else if (part.contains("base")) {
-            fail(p + "/base", "only a part with \"hands\": \"base\" (its own or the sign's) has a base hand");
+            fail(p + "/base", "only a part with \"hands\": \"base\" or \"together\" (its own or the sign's) has a base hand");
         }
         return finishPart(part, p, out);
     }
@@ -365,6 +380,7 @@ std::string toString(HandRelation r) {
         case HandRelation::Mirrored: return "mirrored";
         case HandRelation::Alternating: return "alternating";
         case HandRelation::Base: return "base";
+        case HandRelation::Together: return "together";
     }
     return "?";
 }
