@@ -229,6 +229,18 @@ private:
                 }
                 break;
         }
+        // A curved stroke's keys are timed by the distance along it, so the hand keeps one speed
+        // between its ends: sampled evenly in u, an arc whose side leans along its chord (MARRY:
+        // up while the chord goes down) has short first and long last spans, and keys evenly
+        // spaced in time made the hand creep off and then rush (16 mm in the first sixth, 38 mm
+        // in the last).
+        if (p.path == PathShape::Arc || p.path == PathShape::Zigzag || p.path == PathShape::Wavy) {
+            double along = 0.0;
+            std::vector<double> at{0.0};
+            for (std::size_t k = 1; k < s.size(); ++k) at.push_back(along += glm::distance(s[k].position, s[k - 1].position));
+            if (along > 1e-6)
+                for (std::size_t k = 0; k < s.size(); ++k) s[k].u = at[k] / along;
+        }
         return s;
     }
 
