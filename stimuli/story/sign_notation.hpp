@@ -86,15 +86,15 @@ struct NotationPart {
     std::string baseHandshape;
     glm::dvec3 baseFingers{0.0, 0.0, 1.0}, basePalm{0.0, 1.0, 0.0};
     NotationPlace baseAt;
-    // A base hand with its own path ("base": {"path": {"direction", "size"}}): it moves this far
-    // over each stroke, in step with the dominant hand, and back on its returns (RIGHT, HARD,
-    // MARRY: both hands come together). Zero: a still base hand.
-    glm::dvec3 baseMoveMm{0.0};
+    // A base hand with its own path ("base": {"path": ...}, its path fields only): it moves along
+    // it over each stroke, in step with the dominant hand, and back on its returns (RIGHT, HARD,
+    // MARRY: both hands come together; YEAR: both circle). Empty: a still base hand.
+    std::vector<NotationPart> basePath;
     std::vector<NotationContact> contacts;
     // Whether both hands move (Battison 1978's symmetry condition applies: ASL-LEX codes such a
     // sign SymmetricalOrAlternating, or DominanceViolation when the handshapes differ).
     bool bothHandsMove() const {
-        return hands == HandRelation::Together || (hands == HandRelation::Base && glm::length(baseMoveMm) > 0.0);
+        return hands == HandRelation::Together || (hands == HandRelation::Base && !basePath.empty());
     }
 };
 

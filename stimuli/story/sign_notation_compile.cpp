@@ -155,7 +155,7 @@ private:
         std::optional<HandPose> base = isBase ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
         if (!base) source_.failAt(field, "a place on the other hand needs \"hands\": \"base\" or \"together\" and the part's base hand");
         // A base hand with its own path: the path's end is on the base hand where it has moved to.
-        base->positionMm += baseShare_ * current.baseMoveMm;
+        base->positionMm += baseShiftMm_;
         const std::string name = place.name.substr(place.name.find(':') + 1);
         const std::string& shape = n_.parts[static_cast<std::size_t>(part_)].baseHandshape.empty()
                                        ? baseShapeFrom(static_cast<std::size_t>(part_))
@@ -276,10 +276,17 @@ private:
                                          : point(p.endHandshape, hand::Side::Right, p.touch, partPointer_ + "/touch");
         const glm::dvec3 start = palmOriginForTouch(resolve(p.at, partPointer_ + "/at"), q0, startTouch);
         glm::dvec3 end = start;
+        // The base hand's own path (its palm origin's samples), when it has one.
+        std::vector<Sample> baseStroke;
+        if (!p.basePath.empty()) {
+            const NotationPart& own = p.basePath.front();
+            const glm::dvec3 from = basePose(static_cast<std::size_t>(part_))->positionMm;
+            baseStroke = stroke(own, from, own.path == PathShape::Circle ? from : from + own.direction * own.sizeMm);
+        }
         if (p.to) {
-            baseShare_ = 1.0;
+            if (!baseStroke.empty()) baseShiftMm_ = baseStroke.back().position - baseStroke.front().position;
             end = palmOriginForTouch(resolve(*p.to, partPointer_ + "/path/to"), q1, endTouch);
-            baseShare_ = 0.0;
+            baseShiftMm_ = glm::dvec3(0.0);
         }
         else if (p.path != PathShape::Circle && p.sizeMm > 0.0) end = start + p.direction * p.sizeMm;
         const std::vector<Sample> forth = stroke(p, start, end);
@@ -373,8 +380,8 @@ private:
                     if (relation == HandRelation::Base) {
                         // A still base hand, or one moving its own path in step with the strokes.
                         HandPose moved = *base;
-                        if (!oscillates) moved.positionMm += key0.u * p.baseMoveMm;
-                        key(h, key0.t, moved, baseShape, key0.via && glm::length(p.baseMoveMm) > 0.0);
+                        if (!baseStroke.empty() && !oscillates) moved.positionMm = positionAt(baseStroke, key0.u);
+                        key(h, key0.t, moved, baseShape, key0.via && !baseStroke.empty());
                         continue;
                     }
                     if (relation == HandRelation::Together) {
@@ -471,7 +478,7 @@ private:
     const JsonSource& source_;
     std::string pointer_, partPointer_;
     int part_ = 0;
-    double baseShare_ = 0.0;  // how far along its own path the base hand is (resolve)
+    glm::dvec3 baseShiftMm_{0.0};  // where the base hand has moved on its own path (resolve)
     CompiledNotation out_;
     std::vector<std::pair<double, double>> holds_;  // one-handed parts of a two-handed sign
 };

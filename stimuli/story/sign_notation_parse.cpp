@@ -209,14 +209,10 @@ private:
             if (b.contains("path")) {
                 const std::string bp = p + "/base/path";
                 if (relation == HandRelation::Together) fail(bp, "hands moving \"together\" follow the right hand's path; the left has none of its own");
-                const json& path = b["path"];
-                if (!path.is_object()) fail(bp, "expected {\"shape\": \"straight\", \"direction\": ..., \"size\": mm}");
-                only(path, bp, {"shape", "direction", "size"});
-                if (text(path, bp, "shape", "straight") != "straight") fail(bp + "/shape", "a base hand's own path is \"straight\"");
-                if (!path.contains("direction")) fail(bp + "/direction", "give the base hand's direction (\"right\", [x, y, z])");
-                const double size = number(path, bp, "size", kSizeMm, 0.0);
-                if (size < 1.0) fail(bp + "/size", "a base hand's path needs its size in mm");
-                out.baseMoveMm = direction(path["direction"], bp + "/direction") * size;
+                NotationPart own;
+                readPath(b["path"], bp, own);
+                if (own.to) fail(bp + "/to", "a base hand's own path goes in a \"direction\" with a \"size\", or is a circle");
+                out.basePath.push_back(own);
             }
             out.baseHandshape = shape(b, p + "/base", "handshape", true);
             orientation(b, p + "/base", "fingers", "palm", out.baseFingers, out.basePalm, true);
