@@ -79,13 +79,19 @@ std::string lower(std::string s) {
 // any flat hand.
 bool sameNondominant(const std::string& entry, const std::string& ours) {
     const std::string e = lower(entry);
-    if (e == ours) return true;
+    if (e == ours || entry == ours) return true;  // a handshape label, or "DominanceViolation"
     return e == "b" && (ours == "closed_b" || ours == "open_b" || ours == "flat_b");
 }
 
 std::string labelOf(const HandshapeLibrary& shapes, const std::string& name) {
     const Handshape* s = shapes.find(name);
     return s && !s->aslLexLabel.empty() ? s->aslLexLabel : "(" + name + ")";
+}
+
+// Battison's (1978) unmarked handshapes as ASL-LEX 2.0 labels them (its flat hands are B).
+bool unmarkedHandshape(const std::string& label) {
+    static const std::vector<std::string> unmarked{"open_b", "flat_b", "closed_b", "b", "a", "s", "c", "o", "1", "5"};
+    return std::find(unmarked.begin(), unmarked.end(), label) != unmarked.end();
 }
 
 bool differs(const NotationProvenance& p, const std::string& field) {
@@ -132,8 +138,14 @@ std::vector<AslLexCode> deriveAslLexCode(const SignNotation& n, const HandshapeL
         // Both hands move (together, or a base hand with its own path): Battison's (1978)
         // symmetry condition, which a different handshape violates (ASL-LEX: DominanceViolation).
         else if (p.bothHandsMove()) c.signType = sameShape ? "SymmetricalOrAlternating" : "DominanceViolation";
+        // A still base hand in the dominant's own marked handshape (not one of Battison's 1978
+        // unmarked B, A, S, C, O, 1, 5): ASL-LEX 2.0 codes it DominanceViolation (NAME, CHAIR:
+        // 60 of its 63 DominanceViolation signs have a marked handshape; 6 of its 162
+        // AsymmetricalSameHandshape signs do). Only in a sign's first part: its coding of later
+        // morphemes never uses the type (15 such second parts, SISTER, FUN, are Asymmetrical).
+        else if (sameShape && !unmarkedHandshape(c.handshape) && codes.empty()) c.signType = "DominanceViolation";
         else c.signType = sameShape ? "AsymmetricalSameHandshape" : "AsymmetricalDifferentHandshape";
-        if (base && p.bothHandsMove() && !sameShape) c.nondominant = "DominanceViolation";
+        if (base && c.signType == "DominanceViolation") c.nondominant = "DominanceViolation";
         else if (base) c.nondominant = labelOf(shapes, p.baseHandshape);
         else if (p.hands != HandRelation::One && p.hands != HandRelation::Base) c.nondominant = c.handshape;
         switch (p.path) {

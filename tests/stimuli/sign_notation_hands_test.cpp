@@ -208,6 +208,23 @@ TEST(SignNotationHands, ACurvedStrokeKeepsOneSpeedBetweenItsKeys) {
     EXPECT_LT(fastest / slowest, 1.01);
 }
 
+TEST(SignNotationHands, AStillBaseInTheDominantsOwnMarkedHandshapeIsADominanceViolation) {
+    // NAME: the H taps the still base H. ASL-LEX 2.0 codes a marked base of the same handshape
+    // a dominance violation in a sign's first part (B on B stays Asymmetrical), never in a later one.
+    const auto code = [](const std::string& shape, bool secondPart) {
+        const std::string tap = R"({"seconds": 0.5, "handshape": ")" + shape + R"(", "fingers": "forward", "palm": "left",
+            "at": "hand:radial", "offset": [0, 40, 0], "touch": "ulnar",
+            "base": {"handshape": ")" + shape + R"(", "fingers": "forward", "palm": "right", "at": "neutral"}})";
+        const std::string one = R"({"seconds": 0.3, "handshape": "1", "fingers": "up", "palm": "forward", "at": "chin", "offset": [0, 0, 80]})";
+        const Lexicon lexicon = parse(lexiconWith(R"({"hands": "base", "parts": [)" + (secondPart ? one + ", " + tap : tap) + "]}"));
+        return deriveAslLexCode(*lexicon.signs.front().notation, shapes()).back();
+    };
+    EXPECT_EQ(code("H", false).signType, "DominanceViolation");
+    EXPECT_EQ(code("H", false).nondominant, "DominanceViolation");
+    EXPECT_EQ(code("B", false).signType, "AsymmetricalSameHandshape");
+    EXPECT_EQ(code("H", true).signType, "AsymmetricalSameHandshape");
+}
+
 TEST(SignNotationHands, MistakesInTheNewRelationsAreNamedAtTheirField) {
     struct Case {
         std::string notation, field, words;
