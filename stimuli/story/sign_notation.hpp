@@ -25,7 +25,9 @@
 
 namespace signstim::stimuli {
 
-enum class HandRelation { One, Symmetric, Mirrored, Alternating, Base };
+// Together: both hands move as one rigid unit (BABY's cradled arms, LOVE's crossed fists): the
+// left hand starts where `base` puts it and keeps its pose relative to the right hand.
+enum class HandRelation { One, Symmetric, Mirrored, Alternating, Base, Together };
 enum class PathShape { None, Straight, Arc, Circle, Zigzag, Wavy };
 enum class RepeatReturn { Retrace, Lifted, Continue, Trill };
 enum class LocalMovement { None, Wiggle, Flick, Bend, OpenClose, Twist, Nod, Rub };
@@ -87,7 +89,16 @@ struct NotationPart {
     // The base hand carried by the dominant hand's path (HELP: the palm lifts the fist): it keeps
     // its place relative to the dominant hand instead of holding still.
     bool baseCarried = false;
+    // A base hand with its own path ("base": {"path": ...}, its path fields only): it moves along
+    // it over each stroke, in step with the dominant hand, and back on its returns (RIGHT, HARD,
+    // MARRY: both hands come together; YEAR: both circle). Empty: a still base hand.
+    std::vector<NotationPart> basePath;
     std::vector<NotationContact> contacts;
+    // Whether both hands move (Battison 1978's symmetry condition applies: ASL-LEX codes such a
+    // sign SymmetricalOrAlternating, or DominanceViolation when the handshapes differ).
+    bool bothHandsMove() const {
+        return hands == HandRelation::Together || (hands == HandRelation::Base && !basePath.empty());
+    }
 };
 
 // Whether the part's local movement oscillates over a still hand: a wiggle, twist, nod or rub,

@@ -79,13 +79,19 @@ std::string lower(std::string s) {
 // any flat hand.
 bool sameNondominant(const std::string& entry, const std::string& ours) {
     const std::string e = lower(entry);
-    if (e == ours) return true;
+    if (e == ours || entry == ours) return true;  // a handshape label, or "DominanceViolation"
     return e == "b" && (ours == "closed_b" || ours == "open_b" || ours == "flat_b");
 }
 
 std::string labelOf(const HandshapeLibrary& shapes, const std::string& name) {
     const Handshape* s = shapes.find(name);
     return s && !s->aslLexLabel.empty() ? s->aslLexLabel : "(" + name + ")";
+}
+
+// Battison's (1978) unmarked handshapes as ASL-LEX 2.0 labels them (its flat hands are B).
+bool unmarkedHandshape(const std::string& label) {
+    static const std::vector<std::string> unmarked{"open_b", "flat_b", "closed_b", "b", "a", "s", "c", "o", "1", "5"};
+    return std::find(unmarked.begin(), unmarked.end(), label) != unmarked.end();
 }
 
 bool differs(const NotationProvenance& p, const std::string& field) {
@@ -126,10 +132,21 @@ std::vector<AslLexCode> deriveAslLexCode(const SignNotation& n, const HandshapeL
         AslLexCode c;
         c.handshape = labelOf(shapes, p.handshape);
         const bool base = p.hands == HandRelation::Base && !p.baseHandshape.empty();
+        const bool sameShape = base && labelOf(shapes, p.baseHandshape) == c.handshape;
         if (p.hands == HandRelation::One || (p.hands == HandRelation::Base && !base)) c.signType = "OneHanded";
         else if (!base) c.signType = "SymmetricalOrAlternating";
-        else c.signType = labelOf(shapes, p.baseHandshape) == c.handshape ? "AsymmetricalSameHandshape" : "AsymmetricalDifferentHandshape";
-        if (base) c.nondominant = labelOf(shapes, p.baseHandshape);
+        // Both hands move (together, or a base hand with its own path): Battison's (1978)
+        // symmetry condition, which a different handshape violates (ASL-LEX: DominanceViolation).
+        else if (p.bothHandsMove()) c.signType = sameShape ? "SymmetricalOrAlternating" : "DominanceViolation";
+        // A still base hand in the dominant's own marked handshape (not one of Battison's 1978
+        // unmarked B, A, S, C, O, 1, 5): ASL-LEX 2.0 codes it DominanceViolation (NAME, CHAIR:
+        // 60 of its 63 DominanceViolation signs have a marked handshape; 6 of its 162
+        // AsymmetricalSameHandshape signs do). Only in a sign's first part: its coding of later
+        // morphemes never uses the type (15 such second parts, SISTER, FUN, are Asymmetrical).
+        else if (sameShape && !unmarkedHandshape(c.handshape) && codes.empty()) c.signType = "DominanceViolation";
+        else c.signType = sameShape ? "AsymmetricalSameHandshape" : "AsymmetricalDifferentHandshape";
+        if (base && c.signType == "DominanceViolation") c.nondominant = "DominanceViolation";
+        else if (base) c.nondominant = labelOf(shapes, p.baseHandshape);
         else if (p.hands != HandRelation::One && p.hands != HandRelation::Base) c.nondominant = c.handshape;
         switch (p.path) {
             case PathShape::None: c.movement = "None"; break;
@@ -143,7 +160,10 @@ std::vector<AslLexCode> deriveAslLexCode(const SignNotation& n, const HandshapeL
         // ASL-LEX codes where the hand is at onset; a sign that touches, where it touches.
         // Hands that touch each other without a base hand (MORE, FAMILY) touch in neutral
         // space, as ASL-LEX codes them.
-        const bool handsMeet = !p.contacts.empty() && p.hands != HandRelation::Base && p.contacts.front().at.rfind("hand:", 0) == 0;
+        // So do two moving hands that touch (no hand is the other's still base).
+        const std::string& first = p.contacts.empty() ? std::string() : p.contacts.front().at;
+        const bool onOther = first.rfind("hand:", 0) == 0 || first.rfind("arm:", 0) == 0;
+        const bool handsMeet = onOther && (p.bothHandsMove() || (p.hands != HandRelation::Base && first.rfind("hand:", 0) == 0));
         const auto [major, minor] = handsMeet         ? std::pair<std::string, std::string>{"Neutral", "Neutral"}
                                     : p.contacts.empty() ? aslLexLocation(p.at.name, glm::length(p.at.offsetMm))
                                                          : aslLexLocation(p.contacts.front().at, glm::length(p.contacts.front().offsetMm));
@@ -234,7 +254,7 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         double best = 1e18;
         for (const auto& [name, point] : lexicon.locations)
             if (glm::distance(point, touch) < best) best = glm::distance(point, touch), nearest = name;
-        if (p.hands == HandRelation::Base && !p.baseHandshape.empty())
+        if (p.hands == HandRelation::Base && !p.baseHandshape.empty() && !p.bothHandsMove())
             for (const char* name : {"hand:palm", "hand:back", "hand:heel", "hand:radial", "hand:ulnar", "hand:fingertips",
                                      "hand:thumb", "hand:index", "hand:middle", "hand:ring", "hand:little",
                                      "hand:finger-back", "hand:finger-front", "arm:wrist", "arm:wrist-front", "arm:forearm",
@@ -317,6 +337,8 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
     for (std::size_t k = 0; k + 1 < sign.contactEvents.size(); ++k) {
         const ContactEvent &a = sign.contactEvents[k], &b = sign.contactEvents[k + 1];
         if (a.at != b.at || a.by != b.by || a.part != b.part || b.timeSeconds - a.timeSeconds < 1e-3) continue;
+        // Hands moving together keep their touch (BABY's arms rest on each other as they rock).
+        if (n.parts[static_cast<std::size_t>(a.part)].hands == HandRelation::Together) continue;
         const double t = 0.5 * (a.timeSeconds + b.timeSeconds);
         std::optional<glm::dvec3> target = placePoint(t, a.at);
         if (!target) continue;
@@ -328,10 +350,11 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
     // Two hands that never touch stay apart; the relation holds at every sample.
     if (tracks.size() == 2) {
         // The relation holds inside its own parts' strokes (a compound changes it).
-        bool anyMirrored = false, anyBase = false;
+        bool anyMirrored = false, anyBase = false, anyTogether = false;
         for (const NotationPart& p : n.parts) {
             anyMirrored = anyMirrored || p.hands == HandRelation::Mirrored;
-            anyBase = anyBase || p.hands == HandRelation::Base;
+            anyBase = anyBase || (p.hands == HandRelation::Base && !p.bothHandsMove());
+            anyTogether = anyTogether || p.hands == HandRelation::Together;
         }
         // A part entered from another relation: the hands arrive from places that are no mirror
         // images, and the pass through the part's first key carries that in (sampleTrack), so
@@ -360,11 +383,11 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
         if (anyMirrored) add("hands mirrored", worst < 0.5, format("%.2f mm from the mirror image at worst", worst));
         if (anyBase) {
             // A still base hand holds its place; a carried one (HELP) keeps its place relative to
-            // the dominant hand (its offset varies by < 0.5 mm).
+            // the dominant hand (its offset varies by < 0.5 mm); one with its own path is not still.
             double moved = 0.0, drift = 0.0;
             bool still = false, carried = false;
             for (std::size_t i = 0; i < sign.strokes.size(); ++i) {
-                if (n.parts[i].baseHandshape.empty()) continue;
+                if (n.parts[i].baseHandshape.empty() || n.parts[i].bothHandsMove()) continue;
                 const double t0 = sign.strokes[i].startSeconds;
                 const glm::dvec3 offset0 = sampleAt(tracks[1], t0).pose.positionMm - sampleAt(tracks[0], t0).pose.positionMm;
                 for (double t = t0; t <= sign.strokes[i].endSeconds; t += kSampleSeconds) {
@@ -378,6 +401,23 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
             }
             if (still || !carried) add("base hand still", moved < 0.5, format("moves %.2f mm", moved));
             if (carried) add("base hand carried", drift < 0.5, format("%.2f mm from its place by the dominant hand at worst", drift));
+        }
+        if (anyTogether) {
+            // One rigid unit: the left palm centre and fingertips keep their place in the right
+            // hand's frame (as sampled, between keys too).
+            double drift = 0.0;
+            for (std::size_t i = 0; i < sign.strokes.size(); ++i) {
+                if (n.parts[i].hands != HandRelation::Together) continue;
+                const auto relative = [&](double t, const char* point) {
+                    const Sampled r = sampleAt(tracks[0], t), l = sampleAt(tracks[1], t);
+                    const glm::dvec3 at = handPointInSpace(l.pose, *handPointMm(model, l.controls, hand::Side::Left, point));
+                    return glm::inverse(r.pose.orientation) * (at - r.pose.positionMm);
+                };
+                for (double t = sign.strokes[i].startSeconds; t <= sign.strokes[i].endSeconds; t += kSampleSeconds)
+                    for (const char* point : {"palm", "fingertips"})
+                        drift = std::max(drift, glm::distance(relative(t, point), relative(sign.strokes[i].startSeconds, point)));
+            }
+            add("hands rigid", drift < 0.5, format("the left hand moves %.2f mm in the right hand's frame at worst", drift));
         }
     }
     std::string relations;

@@ -32,6 +32,9 @@ constexpr double kZigzagCornerWidth = 0.12;
 constexpr double kLiftedReturnTime = 0.6, kLiftedHeight = 0.3, kLiftedMinimumMm = 15.0;
 // [D] A flick opens in the first 35 % of its stroke (a snap), the rest held open.
 constexpr double kFlickShare = 0.35;
+// [D] A straight stroke of hands moving together whose orientation turns: 4 keys (a 20° turn
+// keeps the left hand within 0.1 mm of its rigid pose between them).
+constexpr int kTogetherTurnSamples = 4;
 // [D] A rub moves 8 mm to each side.
 constexpr double kRubMm = 8.0;
 
@@ -147,9 +150,12 @@ private:
             at.x = place.offsetMm.x;
             return at;
         }
-        const bool isBase = n_.parts[static_cast<std::size_t>(part_)].hands == HandRelation::Base;
-        const std::optional<HandPose> base = isBase ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
-        if (!base) source_.failAt(field, "a place on the other hand needs \"hands\": \"base\" and the part's base hand");
+        const NotationPart& current = n_.parts[static_cast<std::size_t>(part_)];
+        const bool isBase = current.hands == HandRelation::Base || current.hands == HandRelation::Together;
+        std::optional<HandPose> base = isBase ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
+        if (!base) source_.failAt(field, "a place on the other hand needs \"hands\": \"base\" or \"together\" and the part's base hand");
+        // A base hand with its own path: the path's end is on the base hand where it has moved to.
+        base->positionMm += baseShiftMm_;
         const std::string name = place.name.substr(place.name.find(':') + 1);
         const std::string& shape = n_.parts[static_cast<std::size_t>(part_)].baseHandshape.empty()
                                        ? baseShapeFrom(static_cast<std::size_t>(part_))
@@ -171,6 +177,14 @@ private:
             case PathShape::None:
             case PathShape::Straight:
                 s = {{0.0, start, false}, {1.0, end, false}};
+                // Hands moving together that turn as they go: the left hand swings on an arc
+                // about the right, which keys passed through keep (a chord would pull it ~1 mm
+                // out of the rigid pose for a 20° turn).
+                if (p.hands == HandRelation::Together && p.endFingers && p.local != LocalMovement::Flick && length > 0.0)
+                    for (int k = kTogetherTurnSamples - 1; k > 0; --k) {
+                        const double u = static_cast<double>(k) / kTogetherTurnSamples;
+                        s.insert(s.begin() + 1, {u, start + u * chord, true});
+                    }
                 // A flick snaps open early: a key where it is open (passed through).
                 if (p.local == LocalMovement::Flick) s.insert(s.begin() + 1, {kFlickShare, start + kFlickShare * chord, length > 0.0});
                 break;
@@ -215,6 +229,18 @@ private:
                 }
                 break;
         }
+        // A curved stroke's keys are timed by the distance along it, so the hand keeps one speed
+        // between its ends: sampled evenly in u, an arc whose side leans along its chord (MARRY:
+        // up while the chord goes down) has short first and long last spans, and keys evenly
+        // spaced in time made the hand creep off and then rush (16 mm in the first sixth, 38 mm
+        // in the last).
+        if (p.path == PathShape::Arc || p.path == PathShape::Zigzag || p.path == PathShape::Wavy) {
+            double along = 0.0;
+            std::vector<double> at{0.0};
+            for (std::size_t k = 1; k < s.size(); ++k) at.push_back(along += glm::distance(s[k].position, s[k - 1].position));
+            if (along > 1e-6)
+                for (std::size_t k = 0; k < s.size(); ++k) s[k].u = at[k] / along;
+        }
         return s;
     }
 
@@ -250,7 +276,18 @@ private:
                                          : point(p.endHandshape, hand::Side::Right, p.touch, partPointer_ + "/touch");
         const glm::dvec3 start = palmOriginForTouch(resolve(p.at, partPointer_ + "/at"), q0, startTouch);
         glm::dvec3 end = start;
-        if (p.to) end = palmOriginForTouch(resolve(*p.to, partPointer_ + "/path/to"), q1, endTouch);
+        // The base hand's own path (its palm origin's samples), when it has one.
+        std::vector<Sample> baseStroke;
+        if (!p.basePath.empty()) {
+            const NotationPart& own = p.basePath.front();
+            const glm::dvec3 from = basePose(static_cast<std::size_t>(part_))->positionMm;
+            baseStroke = stroke(own, from, own.path == PathShape::Circle ? from : from + own.direction * own.sizeMm);
+        }
+        if (p.to) {
+            if (!baseStroke.empty()) baseShiftMm_ = baseStroke.back().position - baseStroke.front().position;
+            end = palmOriginForTouch(resolve(*p.to, partPointer_ + "/path/to"), q1, endTouch);
+            baseShiftMm_ = glm::dvec3(0.0);
+        }
         else if (p.path != PathShape::Circle && p.sizeMm > 0.0) end = start + p.direction * p.sizeMm;
         const std::vector<Sample> forth = stroke(p, start, end);
         // Time: n strokes and n − 1 returns.
@@ -313,8 +350,10 @@ private:
             for (int k = 0; k <= steps; ++k) path.push_back({t0 + p.seconds * k / steps, start, static_cast<double>(k) / steps, false});
         }
         const HandRelation relation = p.hands;
-        const std::optional<HandPose> base = relation == HandRelation::Base ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
-        const std::string baseShape = relation == HandRelation::Base ? baseShapeFrom(static_cast<std::size_t>(part_)) : "";
+        const bool hasBase = relation == HandRelation::Base || relation == HandRelation::Together;
+        const std::optional<HandPose> base = hasBase ? basePose(static_cast<std::size_t>(part_)) : std::nullopt;
+        const std::string baseShape = hasBase ? baseShapeFrom(static_cast<std::size_t>(part_)) : "";
+        const glm::dquat startInverse = glm::inverse(q0);
         if (out_.hands.size() == 2 && relation == HandRelation::One) holds_.emplace_back(t0, t0 + p.seconds);
         for (std::size_t k = 0; k < path.size(); ++k) {
             const Key& key0 = path[k];
@@ -324,7 +363,11 @@ private:
                 const bool opposite = h == 1 && relation == HandRelation::Alternating;
                 double u = key0.u;
                 glm::dvec3 position = key0.position;
-                if (opposite && !oscillates) {
+                if (opposite && !oscillates && p.path == PathShape::Circle) {
+                    // Alternating circles: the left hand half a turn ahead on the mirrored circle,
+                    // so in one plane the hands orbit each other (YEAR); it closes as the right does.
+                    position = positionAt(forth, std::fmod(u + 0.5, 1.0));
+                } else if (opposite && !oscillates) {
                     u = 1.0 - u;
                     position = positionAt(forth, u);
                 }
@@ -335,13 +378,26 @@ private:
                 if (oscillates) applyLocal(p, k, opposite, start, pose, shape);
                 if (h == 1) {
                     if (relation == HandRelation::Base) {
-                        if (!p.baseCarried) {
-                            key(h, key0.t, *base, baseShape, false);
+                        if (p.baseCarried) {
+                            // Carried (HELP): the base hand moves with the dominant hand's path.
+                            HandPose carried = *base;
+                            carried.positionMm += position - start;
+                            key(h, key0.t, carried, baseShape, key0.via);
                             continue;
                         }
-                        // Carried (HELP): the base hand moves with the dominant hand's path.
-                        HandPose carried = *base;
-                        carried.positionMm += position - start;
+                        // A still base hand, or one moving its own path in step with the strokes.
+                        HandPose moved = *base;
+                        if (!baseStroke.empty() && !oscillates) moved.positionMm = positionAt(baseStroke, key0.u);
+                        key(h, key0.t, moved, baseShape, key0.via && !baseStroke.empty());
+                        continue;
+                    }
+                    if (relation == HandRelation::Together) {
+                        // One rigid unit: the left hand's start pose carried by the right hand's
+                        // rotation and displacement from its own start.
+                        const glm::dquat turn = pose.orientation * startInverse;
+                        HandPose carried;
+                        carried.orientation = turn * base->orientation;
+                        carried.positionMm = pose.positionMm + turn * (base->positionMm - start);
                         key(h, key0.t, carried, baseShape, key0.via);
                         continue;
                     }
@@ -429,6 +485,7 @@ private:
     const JsonSource& source_;
     std::string pointer_, partPointer_;
     int part_ = 0;
+    glm::dvec3 baseShiftMm_{0.0};  // where the base hand has moved on its own path (resolve)
     CompiledNotation out_;
     std::vector<std::pair<double, double>> holds_;  // one-handed parts of a two-handed sign
 };

@@ -52,7 +52,8 @@ private:
                                                                    {"symmetric", HandRelation::Symmetric},
                                                                    {"mirrored", HandRelation::Mirrored},
                                                                    {"alternating", HandRelation::Alternating},
-                                                                   {"base", HandRelation::Base}};
+                                                                   {"base", HandRelation::Base},
+                                                                   {"together", HandRelation::Together}};
         return choose(relations, text(object, p, "hands", ""), p + "/hands");
     }
 
@@ -196,13 +197,27 @@ private:
             if (out.repeat > 1 && out.path == PathShape::None)
                 fail(rp + "/count", "repeats a path: give one (\"path\"), or repeat a local movement with its \"count\"");
         }
-        if (relation == HandRelation::Base) {
+        if (relation == HandRelation::Together && !part.contains("base"))
+            fail(p + "/base", "hands moving \"together\" name the left hand's start: {\"handshape\", \"fingers\", \"palm\", \"at\"}");
+        if (relation == HandRelation::Base || relation == HandRelation::Together) {
             // A part without one (the first part of HOMEWORK, one-handed HOME) has the base hand
             // wait where the next part needs it.
             if (!part.contains("base")) return finishPart(part, p, out);
             if (!part["base"].is_object()) fail(p + "/base", "expected {\"handshape\", \"fingers\", \"palm\", \"at\"}");
             const json& b = part["base"];
-            only(b, p + "/base", {"handshape", "fingers", "palm", "at", "offset", "carried"});
+            only(b, p + "/base", {"handshape", "fingers", "palm", "at", "offset", "path", "carried"});
+            if (b.contains("path")) {
+                const std::string bp = p + "/base/path";
+                if (relation == HandRelation::Together) fail(bp, "hands moving \"together\" follow the right hand's path; the left has none of its own");
+                NotationPart own;
+                readPath(b["path"], bp, own);
+                if (own.to) fail(bp + "/to", "a base hand's own path goes in a \"direction\" with a \"size\", or is a circle");
+                out.basePath.push_back(own);
+            }
+            if (b.contains("carried") && b.contains("path"))
+                fail(p + "/base/carried", "a carried base hand moves with the dominant hand; it has no path of its own");
+            if (b.contains("carried") && relation == HandRelation::Together)
+                fail(p + "/base/carried", "hands moving \"together\" are carried already");
             out.baseHandshape = shape(b, p + "/base", "handshape", true);
             orientation(b, p + "/base", "fingers", "palm", out.baseFingers, out.basePalm, true);
             out.baseAt = place(b, p + "/base", "at", "offset");
@@ -212,7 +227,7 @@ private:
                 out.baseCarried = b["carried"].get<bool>();
             }
         } else if (part.contains("base")) {
-            fail(p + "/base", "only a part with \"hands\": \"base\" (its own or the sign's) has a base hand");
+            fail(p + "/base", "only a part with \"hands\": \"base\" or \"together\" (its own or the sign's) has a base hand");
         }
         return finishPart(part, p, out);
     }
@@ -369,6 +384,7 @@ std::string toString(HandRelation r) {
         case HandRelation::Mirrored: return "mirrored";
         case HandRelation::Alternating: return "alternating";
         case HandRelation::Base: return "base";
+        case HandRelation::Together: return "together";
     }
     return "?";
 }
