@@ -19,6 +19,7 @@
 #include <glm/geometric.hpp>
 
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
