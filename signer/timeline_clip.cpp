@@ -390,7 +390,8 @@ void TimelineClip::settleTouches() {
             SignerPosture posture = straight[i];
             posture.rightWrist->wristMm += rightShare * way * direction;
             posture.leftWrist->wristMm -= (1.0f - rightShare) * way * direction;
-            return measure(*rig_, posture, arms(posture)).hands;
+            const SignerCapsules capsules = signerCapsules(*rig_, posture, arms(posture));
+            return closestApproach(capsules.right, capsules.left).gapMm;
         };
         std::vector<float> gaps;
         std::size_t deepest = 0;

@@ -101,16 +101,18 @@ glm::vec3 keyedRightWrist(const stimuli::Timeline& timeline, double t) {
 }  // namespace
 
 TEST(Touch, HandsThatTouchMeetAtTheSurfaceAndTheBaseHandHolds) {
-    // The keys put the hands 15-20 mm into each other (synthetic data): settled, they meet
-    // kTouchDepthMm deep at every frame, no deeper and no farther apart; only the moving right
-    // hand is moved, away from the left.
+    // The keys put the hands 15-20 mm into each other (synthetic data): settled, they meet at
+    // every frame, kTouchDepthMm deep or within kClearanceToleranceMm of it (the offset grows
+    // no faster than kTouchRateMmPerSecond); only the moving right hand is moved, away from
+    // the left.
     const stimuli::Timeline timeline = palmToPalm(40.0, true);
     ASSERT_LT(keyedGap(timeline, 0), -10.0f);
     ASSERT_LT(keyedGap(timeline, 1), -10.0f);
     const signer::TimelineClip clip(world().signer.rig(), timeline);
     const glm::vec3 leftKey = signer::armTargetFromSigningSpace(timeline.left[0].pose).wristMm;
     for (const signer::ClearanceFrame& f : signer::clearanceFrames(world().signer.rig(), clip)) {
-        EXPECT_NEAR(f.clearance.hands.gapMm, -signer::kTouchDepthMm, 0.5f) << "at " << f.seconds << " s";
+        EXPECT_GE(f.clearance.hands.gapMm, -signer::kTouchDepthMm - 0.5f) << "at " << f.seconds << " s";
+        EXPECT_LE(f.clearance.hands.gapMm, signer::kClearanceToleranceMm) << "at " << f.seconds << " s";
         const signer::SignerPosture p = clip.postureAt(f.seconds);
         EXPECT_LT(glm::distance(p.leftWrist->wristMm, leftKey), 1e-3f) << "at " << f.seconds << " s";
         const glm::vec3 keyed = keyedRightWrist(timeline, f.seconds);
