@@ -152,6 +152,11 @@ TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline) : r
             free = start + duration;
         }
     }
+    // Touches settled before the transitions are routed: a transition leaves and reaches the
+    // settled keys.
+    rightTouch_.assign(timeline_.right.size(), glm::vec3(0.0f));
+    leftTouch_.assign(timeline_.left.size(), glm::vec3(0.0f));
+    settleTouches();
     const std::vector<stimuli::TimelineKey>& keys = timeline_.right;
     for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
         const double start = keys[k].timeSeconds, end = keys[k + 1].timeSeconds;
@@ -319,6 +324,171 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     return detour;
 }
 
+void TimelineClip::settleTouches() {
+    // [D] An instant within kSettledMm of kTouchDepthMm is left as it is; the way out is
+    // sought in steps of kStepMm up to kMostMm (about a palm's width: a touch that needs more is
+    // no touch but a hand through the other, which the sign's data must change), then halved
+    // kHalvings times (to 0.25 mm).
+    constexpr float kSettledMm = 0.25f, kStepMm = 4.0f, kMostMm = 64.0f;
+    constexpr int kHalvings = 4;
+    // The stretches that touch with both hands: an item, with the items that follow it without a
+    // transition (its HOLD at a sentence's end), settled as one, so that its offsets are one
+    // function of t.
+    struct Stretch {
+        double startSeconds, endSeconds;
+    };
+    std::vector<Stretch> stretches;
+    for (const stimuli::TimelineSpan& span : timeline_.spans) {
+        if (!span.contact.hands || span.keysEndSeconds <= span.keysStartSeconds) continue;
+        if (!stretches.empty() && span.keysStartSeconds <= stretches.back().endSeconds + 1e-9)
+            stretches.back().endSeconds = std::max(stretches.back().endSeconds, span.keysEndSeconds);
+        else
+            stretches.push_back({span.keysStartSeconds, span.keysEndSeconds});
+    }
+    const auto keysIn = [](const std::vector<stimuli::TimelineKey>& track, const Stretch& span) {
+        std::vector<std::size_t> in;
+        for (std::size_t k = 0; k < track.size(); ++k)
+            if (track[k].timeSeconds >= span.startSeconds - 1e-9 && track[k].timeSeconds <= span.endSeconds + 1e-9)
+                in.push_back(k);
+        return in;
+    };
+    // Whether a hand moves in the item: a held base hand is not the one that comes to the other.
+    const auto moves = [](const std::vector<stimuli::TimelineKey>& track, const std::vector<std::size_t>& in) {
+        for (const std::size_t k : in) {
+            const stimuli::TimelineKey &a = track[in.front()], &b = track[k];
+            if (a.rest != b.rest || glm::distance(a.pose.positionMm, b.pose.positionMm) > 0.5 ||
+                std::abs(glm::dot(a.pose.orientation, b.pose.orientation)) < 0.99999)
+                return true;
+        }
+        return false;
+    };
+    for (const Stretch& span : stretches) {
+        const std::vector<std::size_t> right = keysIn(timeline_.right, span), left = keysIn(timeline_.left, span);
+        const bool rightMoves = moves(timeline_.right, right), leftMoves = moves(timeline_.left, left);
+        // The right hand's share of the way out.
+        const float rightShare = rightMoves == leftMoves ? 0.5f : rightMoves ? 1.0f : 0.0f;
+        // The instants: the item's keys and a grid of the timeline's own time between them.
+        TouchSpan settled;
+        settled.startSeconds = span.startSeconds;
+        settled.endSeconds = span.endSeconds;
+        std::vector<double>& times = settled.times;
+        times.push_back(span.startSeconds);
+        times.push_back(span.endSeconds);
+        for (const std::size_t k : right) times.push_back(timeline_.right[k].timeSeconds);
+        for (const std::size_t k : left) times.push_back(timeline_.left[k].timeSeconds);
+        for (auto f = static_cast<std::uint64_t>(std::floor(span.startSeconds * kTouchFramesPerSecond)) + 1;
+             static_cast<double>(f) / kTouchFramesPerSecond < span.endSeconds; ++f)
+            times.push_back(static_cast<double>(f) / kTouchFramesPerSecond);
+        std::sort(times.begin(), times.end());
+        times.erase(std::unique(times.begin(), times.end(), [](double a, double b) { return b - a < 1e-9; }), times.end());
+        // The way out: one direction for the whole stretch, so that the offsets grow and shrink
+        // along it smoothly. Tried: the line between the closest points at the deepest instant,
+        // the wrists' separation there, and the body's six axes.
+        std::vector<SignerPosture> straight;
+        for (const double t : times) straight.push_back(straightPostureAt(t, false));
+        const auto gapWith = [&](std::size_t i, const glm::vec3& direction, float way) {
+            SignerPosture posture = straight[i];
+            posture.rightWrist->wristMm += rightShare * way * direction;
+            posture.leftWrist->wristMm -= (1.0f - rightShare) * way * direction;
+            const SignerCapsules capsules = signerCapsules(*rig_, posture, arms(posture));
+            return closestApproach(capsules.right, capsules.left).gapMm;
+        };
+        std::vector<float> gaps;
+        std::size_t deepest = 0;
+        for (std::size_t i = 0; i < times.size(); ++i) {
+            gaps.push_back(gapWith(i, glm::vec3(0.0f), 0.0f));
+            if (gaps[i] < gaps[deepest]) deepest = i;
+        }
+        if (gaps[deepest] >= -kTouchDepthMm - kSettledMm) continue;
+        // The way out along `direction` at instant i: the least that brings the touch to
+        // kTouchDepthMm (steps of kStepMm, then halved); where no way up to kMostMm does, the
+        // step that leaves the touch shallowest (the clearance check reports the rest).
+        struct Way {
+            float mm = 0.0f, gapMm = 0.0f;
+        };
+        const auto wayOut = [&](std::size_t i, const glm::vec3& direction) {
+            if (gaps[i] >= -kTouchDepthMm - kSettledMm) return Way{0.0f, gaps[i]};
+            Way shallowest{0.0f, gaps[i]};
+            float inside = 0.0f, outside = kStepMm;
+            for (;; outside += kStepMm) {
+                if (outside > kMostMm) return shallowest;
+                const float gap = gapWith(i, direction, outside);
+                if (gap >= -kTouchDepthMm) break;
+                if (gap > shallowest.gapMm) shallowest = {outside, gap};
+                inside = outside;
+            }
+            for (int k = 0; k < kHalvings; ++k) {
+                const float middle = 0.5f * (inside + outside);
+                (gapWith(i, direction, middle) < -kTouchDepthMm ? inside : outside) = middle;
+            }
+            return Way{outside, -kTouchDepthMm};
+        };
+        const SignerPosture& at = straight[deepest];
+        const SignerCapsules capsules = signerCapsules(*rig_, at, arms(at));
+        const Approach closest = closestApproach(capsules.right, capsules.left);
+        const std::vector<glm::vec3> directions{closest.onFirst - closest.onSecond,
+                                                at.rightWrist->wristMm - at.leftWrist->wristMm,
+                                                {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+        // Kept: the direction whose deepest remaining touch is shallowest, then the one that
+        // moves the hands least at its worst instant, then in all.
+        std::vector<float> best;
+        float bestDeepest = -std::numeric_limits<float>::infinity(), bestWorst = 0.0f, bestTotal = 0.0f;
+        glm::vec3 chosen(0.0f);
+        for (glm::vec3 direction : directions) {
+            if (glm::length(direction) < 1e-3f) continue;
+            direction = glm::normalize(direction);
+            std::vector<float> ways;
+            float deepestGap = std::numeric_limits<float>::infinity(), worst = 0.0f, total = 0.0f;
+            for (std::size_t i = 0; i < times.size(); ++i) {
+                const Way w = wayOut(i, direction);
+                ways.push_back(w.mm);
+                deepestGap = std::min(deepestGap, w.gapMm);
+                worst = std::max(worst, w.mm);
+                total += w.mm;
+            }
+            const bool better = deepestGap > bestDeepest + 0.1f ||
+                                (deepestGap > bestDeepest - 0.1f &&
+                                 (worst < bestWorst - 0.1f || (worst < bestWorst + 0.1f && total < bestTotal)));
+            if (best.empty() || better) {
+                best = ways;
+                bestDeepest = deepestGap;
+                bestWorst = worst;
+                bestTotal = total;
+                chosen = direction;
+            }
+        }
+        if (best.empty()) continue;
+        // The way out grows and shrinks no faster than kTouchRateMmPerSecond: each instant
+        // moves out as far as any other needs, less that rate times the time between them
+        // (an envelope, never less than an instant's own need).
+        std::vector<float> envelope = best;
+        for (std::size_t i = 0; i < times.size(); ++i)
+            for (std::size_t j = 0; j < times.size(); ++j)
+                envelope[i] = std::max(envelope[i], best[j] - static_cast<float>(kTouchRateMmPerSecond * std::abs(times[i] - times[j])));
+        best = envelope;
+        for (std::size_t i = 0; i < times.size(); ++i) {
+            settled.right.push_back(rightShare * best[i] * chosen);
+            settled.left.push_back(-(1.0f - rightShare) * best[i] * chosen);
+        }
+        // The item's keys carry the offsets at their instants, for the transitions out of and
+        // into it (blended with the keys, straightPostureAt).
+        for (const std::size_t k : right) rightTouch_[k] = settled.at(timeline_.right[k].timeSeconds, true);
+        for (const std::size_t k : left) leftTouch_[k] = settled.at(timeline_.left[k].timeSeconds, false);
+        touchSpans_.push_back(std::move(settled));
+    }
+}
+
+glm::vec3 TimelineClip::TouchSpan::at(double seconds, bool rightHand) const {
+    const std::vector<glm::vec3>& offsets = rightHand ? right : left;
+    if (seconds <= times.front()) return offsets.front();
+    for (std::size_t i = 1; i < times.size(); ++i)
+        if (seconds <= times[i]) {
+            const auto u = static_cast<float>((seconds - times[i - 1]) / (times[i] - times[i - 1]));
+            return offsets[i - 1] + u * (offsets[i] - offsets[i - 1]);
+        }
+    return offsets.back();
+}
+
 SignerPosture TimelineClip::postureAt(double seconds) const {
     SignerPosture posture = straightPostureAt(seconds);
     for (const Detour& detour : detours_) {
@@ -333,7 +503,7 @@ SignerPosture TimelineClip::postureAt(double seconds) const {
     return posture;
 }
 
-SignerPosture TimelineClip::straightPostureAt(double seconds) const {
+SignerPosture TimelineClip::straightPostureAt(double seconds, bool settled) const {
     SignerPosture posture;
     for (const hand::Side side : {hand::Side::Right, hand::Side::Left}) {
         const auto& track = side == hand::Side::Right ? timeline_.right : timeline_.left;
@@ -344,7 +514,20 @@ SignerPosture TimelineClip::straightPostureAt(double seconds) const {
         };
         const Resolved from = resolve(*sample.from), to = resolve(*sample.to);
         const float blend = static_cast<float>(sample.blend);
-        const hand::ArmTarget target = blendTargets(from.target, to.target, blend);
+        hand::ArmTarget target = blendTargets(from.target, to.target, blend);
+        // A settled touch's offsets, blended as the keys are (settleTouches).
+        // A settled touch (settleTouches): inside the item, its offsets at t; in a transition,
+        // the keys' offsets blended as the keys are.
+        const TouchSpan* inside = nullptr;
+        for (const TouchSpan& span : touchSpans_)
+            if (!inside && seconds >= span.startSeconds && seconds <= span.endSeconds) inside = &span;
+        const std::vector<glm::vec3>& touch = side == hand::Side::Right ? rightTouch_ : leftTouch_;
+        if (settled && inside) target.wristMm += inside->at(seconds, side == hand::Side::Right);
+        else if (settled && !touch.empty()) {
+            const glm::vec3 a = touch[static_cast<std::size_t>(sample.from - track.data())];
+            const glm::vec3 b = touch[static_cast<std::size_t>(sample.to - track.data())];
+            if (a != glm::vec3(0.0f) || b != glm::vec3(0.0f)) target.wristMm += a + blend * (b - a);
+        }
         const hand::HandControls controls = hand::interpolate(from.controls, to.controls, blend);
         const std::vector<glm::vec3>& elbows = side == hand::Side::Right ? rightElbows_ : leftElbows_;
         const glm::vec3 elbow = blendElbowHints(elbows[static_cast<std::size_t>(sample.from - track.data())],

@@ -22,6 +22,20 @@
 // ends when an item there has them touching; a bump adds at most kDetourPeakSpeedMmPerSecond
 // (timeline_clip.cpp) to the wrist's speed. A detour depends only on the keys at its ends,
 // so frames outside the verb slots stay the same in every version.
+//
+// Touches come to the surface (issue 22: contact as an event the motion reaches; issue 21:
+// the hands never pass through each other). A sign's keys say where the wrists go, from
+// places and points of the hand that know nothing of the rest of the hand's shape: the base
+// hand's thumb lying across its palm (B), the acting hand's curled fingers below its palm or
+// knuckles (S, A, flat-O), a trained verb's keyframes — so a hand meant to land on the other
+// lands in it, 12-23 mm deep; and between two keys the hands can pass through each other.
+// Inside an item that touches with both hands, its keys and instants between them are settled
+// (settleTouches): where the hands' capsules overlap deeper than kTouchDepthMm, the hand that
+// moves in the item (both, half each, when both or neither do) is moved out along the line
+// between the closest points until they meet at that depth. The offsets depend on the
+// timeline alone (the pose stays a function of it and t); the transitions blend them in and
+// out with the keys; an instant that touches still touches, one clear of the other hand is
+// left alone.
 #include "signer/clip.hpp"
 #include "stimuli/story/timeline.hpp"
 
@@ -56,21 +70,44 @@ private:
         double startSeconds = 0.0, durationSeconds = 0.0;
         glm::vec2 fromDeg{0.0f}, toDeg{0.0f};
     };
-    SignerPosture straightPostureAt(double seconds) const;
+    // `settled`: with the settled touches' offsets (settleTouches); false: the keys' own.
+    SignerPosture straightPostureAt(double seconds, bool settled = true) const;
     glm::vec2 headAt(double seconds) const;
     PoseReport arms(const SignerPosture& posture) const;
     Detour routeTransition(double startSeconds, double endSeconds) const;
+    void settleTouches();
 
     const SignerRig* rig_;
     stimuli::Timeline timeline_;
     std::vector<Detour> detours_;  // in time order
     std::vector<glm::vec3> rightElbows_, leftElbows_;  // per key of each track: the solver's elbow there
+    std::vector<glm::vec3> rightTouch_, leftTouch_;    // per key of each track: its wrist's settling offset (body frame, mm)
+    // An item whose touch is settled: the wrists' offsets at its instants (body frame, mm).
+    struct TouchSpan {
+        double startSeconds = 0.0, endSeconds = 0.0;
+        std::vector<double> times;
+        std::vector<glm::vec3> right, left;
+        glm::vec3 at(double seconds, bool rightHand) const;  // linear between the instants
+    };
+    std::vector<TouchSpan> touchSpans_;  // in time order
     glm::vec2 headStartDeg_{0.0f};
     std::vector<HeadMove> headMoves_;  // in time order, one after the other
 };
 
 // [D] How far apart a transition keeps the hands (and each hand from the body).
 inline constexpr float kTransitionClearanceMm = 5.0f;
+// [D] How deep a settled touch of the two hands goes: the capsules pressed 2 mm into each
+// other, within kClearanceToleranceMm (signer/clearance.hpp: skin dents under a press), so
+// the touch is seen to reach the surface and not to pass it.
+inline constexpr float kTouchDepthMm = 2.0f;
+// [D] A touch is settled at the item's keys and at this many instants per second of the
+// timeline between them (its own time, as kRoutingFramesPerSecond): the hands interpolated
+// from key to key can pass through each other where the keys do not (a hand turning over,
+// fingers opening).
+inline constexpr double kTouchFramesPerSecond = 60.0;
+// [D] How fast a settled touch's offset may grow or shrink: 0.3 m/s, an eighth of SPEC §6.2's
+// 2.5 m/s peak wrist speed, so that settling does not make a sign's wrist faster than human.
+inline constexpr double kTouchRateMmPerSecond = 300.0;
 // [D] A transition's clearance is checked at this many instants per second of the timeline (a
 // grid of the timeline's own time, not of any output's frames: the detour, like every pose,
 // depends on the timeline alone).

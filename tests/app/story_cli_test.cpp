@@ -29,18 +29,15 @@ TEST(StoryCli, CheckSaysOkForTheExampleAndNamesLineAndColumnOfAnUnknownSign) {
     const auto ok = runSignstim("story " + shellQuote(kExample) + " --check --scenes " + shellQuote(kScenes));
     EXPECT_EQ(ok.status, 0) << ok.output;
     EXPECT_NE(ok.output.find("ok: \"The question"), std::string::npos) << ok.output;
-    // Then how close the hands come in each version. They never interpenetrate at a transition
-    // and never touch where the sign does not; the one warning is HELP's contact, still deeper
-    // than a touch (a known case: tests/signer/clearance_test.cpp, kKnownTooDeep).
+    // Then how close the hands come in each version. They never interpenetrate at a transition,
+    // never touch where the sign does not, and HELP's touch comes to the surface of the left
+    // palm (signer/timeline_clip.hpp, settleTouches): no warning.
     EXPECT_NE(ok.output.find("closest approach of the hands"), std::string::npos) << ok.output;
     EXPECT_NE(ok.output.find("uninflected: at transitions"), std::string::npos) << ok.output;
     // (The clearance report ends where the timing report begins.)
     const std::string clearance = ok.output.substr(0, ok.output.find("timing ("));
     std::istringstream lines(clearance);
-    for (std::string line; std::getline(lines, line);)
-        if (line.rfind("warning:", 0) == 0) {
-            EXPECT_NE(line.find("HELP (sentence 3): the hands sink into each other"), std::string::npos) << line;
-        }
+    for (std::string line; std::getline(lines, line);) EXPECT_NE(line.rfind("warning:", 0), 0u) << line;
 
     const fs::path dir = freshDir("check");
     std::string text = readFile(kExample);

@@ -1,0 +1,195 @@
+// Touches come to the surface (signer/timeline_clip.hpp, settleTouches; issue 22: contact as
+// an event the motion reaches; issue 21: the hands never pass through each other): inside an
+// item that touches with both hands the hands meet at kTouchDepthMm, not deeper, and still
+// meet; a held base hand stays where its keys put it; a touch that reaches the surface on its
+// own is left alone; and every sign of the default lexicon that touches with both hands,
+// signed alone in citation form, comes to the surface and reaches it.
+#include "signer/clearance.hpp"
+#include "signer/clip.hpp"
+#include "signer/hand_capsules.hpp"
+#include "signer/signer.hpp"
+#include "signer/timeline_clip.hpp"
+#include "stimuli/story/lexicon.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/story/timeline_builder.hpp"
+#include "stimuli/verbs/sora.hpp"
+#include "stimuli/verbs/verb_models.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+using namespace signstim;
+
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR) / "scenes";
+
+// What `signstim sign` signs from: the default signer, handshapes, verbs, models and lexicon.
+struct World {
+    signer::Signer signer{kScenes};
+    stimuli::HandshapeLibrary shapes = stimuli::loadHandshapes(kScenes / "handshapes.json", signer.rig().handModel());
+    stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(kScenes / "verbs.json");
+    stimuli::TrainedVerbModels models = stimuli::loadVerbModels(kScenes / "models" / "verb_models.json", verbs);
+    stimuli::Lexicon lexicon = stimuli::loadLexicon(kScenes / "lexicon", shapes, signer.rig().handModel());
+
+    stimuli::TimelineSources sources() const {
+        stimuli::TimelineSources s;
+        s.lexicon = &lexicon;
+        s.shapes = &shapes;
+        s.verbs = [this](const std::string& verb, stimuli::VerbVersion version, double subject, double object, int, int) {
+            return stimuli::synthesizeVerb(stimuli::VerbSources{&verbs, &models, kScenes / "animator", &shapes}, verb,
+                                           version, subject, object);
+        };
+        return s;
+    }
+};
+const World& world() {
+    static const World w;
+    return w;
+}
+
+stimuli::TimelineKey key(double t, const glm::dvec3& positionMm, const glm::dvec3& fingers, const glm::dvec3& palm) {
+    stimuli::TimelineKey k;
+    k.timeSeconds = t;
+    k.pose.positionMm = positionMm;
+    k.pose.orientation = stimuli::orientationFromFingersPalm(fingers, palm);
+    k.handshape = "B";
+    k.controls = world().shapes.at("B").controls;
+    return k;
+}
+
+// Synthetic: the B hands facing each other, fingers up, palm frames `apartMm` apart across the
+// midline (a clap); the right hand slides 30 mm up along the left's palm in a sign of 0.5 s,
+// the left hand holds still.
+stimuli::Timeline palmToPalm(double apartMm, bool touches) {
+    stimuli::Timeline timeline;
+    timeline.durationSeconds = 0.5;
+    const glm::dvec3 up(0, 1, 0), toLeft(-1, 0, 0), toRight(1, 0, 0);
+    const double x = 0.5 * apartMm;
+    timeline.right = {key(0.0, {x, -40, 300}, up, toLeft), key(0.5, {x, -10, 300}, up, toLeft)};
+    timeline.left = {key(0.0, {-x, -40, 300}, up, toRight), key(0.5, {-x, -40, 300}, up, toRight)};
+    timeline.spans = {{stimuli::SpanKind::Sign, 0.0, 0.5, "CLAP", 0, 0, 0.0, 0.5, {}}};
+    timeline.spans[0].contact.hands = touches;
+    timeline.gaze = {{0.0, std::nullopt}, {0.5, std::nullopt}};
+    return timeline;
+}
+
+// The hands' gap as the keys alone put them (no settling), at key k of palmToPalm.
+float keyedGap(const stimuli::Timeline& timeline, std::size_t k) {
+    const signer::SignerRig& rig = world().signer.rig();
+    std::vector<hand::Capsule> right, left;
+    const hand::ArmTarget r = signer::armTargetFromSigningSpace(timeline.right[k].pose);
+    const hand::ArmTarget l = signer::armTargetFromSigningSpace(timeline.left[k].pose);
+    signer::handCapsules(rig, hand::Side::Right, timeline.right[k].controls, r.wristMm, r.handRotation, right);
+    signer::handCapsules(rig, hand::Side::Left, timeline.left[k].controls, l.wristMm, l.handRotation, left);
+    return signer::closestApproach(right, left).gapMm;
+}
+
+// Where the keys alone put the right wrist at t (body frame).
+glm::vec3 keyedRightWrist(const stimuli::Timeline& timeline, double t) {
+    const stimuli::TimelineSample s = stimuli::sampleTrack(timeline.right, t);
+    return signer::blendTargets(signer::armTargetFromSigningSpace(s.from->pose), signer::armTargetFromSigningSpace(s.to->pose),
+                                static_cast<float>(s.blend))
+        .wristMm;
+}
+
+}  // namespace
+
+TEST(Touch, HandsThatTouchMeetAtTheSurfaceAndTheBaseHandHolds) {
+    // The keys put the hands 15-20 mm into each other (synthetic data): settled, they meet at
+    // every frame, kTouchDepthMm deep or within kClearanceToleranceMm of it (the offset grows
+    // no faster than kTouchRateMmPerSecond); only the moving right hand is moved, away from
+    // the left.
+    const stimuli::Timeline timeline = palmToPalm(40.0, true);
+    ASSERT_LT(keyedGap(timeline, 0), -10.0f);
+    ASSERT_LT(keyedGap(timeline, 1), -10.0f);
+    const signer::TimelineClip clip(world().signer.rig(), timeline);
+    const glm::vec3 leftKey = signer::armTargetFromSigningSpace(timeline.left[0].pose).wristMm;
+    for (const signer::ClearanceFrame& f : signer::clearanceFrames(world().signer.rig(), clip)) {
+        EXPECT_GE(f.clearance.hands.gapMm, -signer::kTouchDepthMm - 0.5f) << "at " << f.seconds << " s";
+        EXPECT_LE(f.clearance.hands.gapMm, signer::kClearanceToleranceMm) << "at " << f.seconds << " s";
+        const signer::SignerPosture p = clip.postureAt(f.seconds);
+        EXPECT_LT(glm::distance(p.leftWrist->wristMm, leftKey), 1e-3f) << "at " << f.seconds << " s";
+        const glm::vec3 keyed = keyedRightWrist(timeline, f.seconds);
+        EXPECT_GT(glm::distance(p.rightWrist->wristMm, leftKey), glm::distance(keyed, leftKey) + 5.0f) << "at " << f.seconds << " s";
+    }
+}
+
+TEST(Touch, ATouchAtTheSurfaceAndASignThatDoesNotTouchAreLeftAlone) {
+    // The hands as far apart as makes them just touch (within kTouchDepthMm), and deep in each
+    // other in a sign that does not say it touches: the wrists go where the keys say.
+    double touching = 40.0;
+    while (touching < 150.0 && keyedGap(palmToPalm(touching, true), 0) < -1.0f) touching += 0.5;
+    for (const auto& [apart, touches] : {std::pair{touching, true}, std::pair{40.0, false}}) {
+        const stimuli::Timeline timeline = palmToPalm(apart, touches);
+        ASSERT_GT(keyedGap(timeline, 0), touches ? -1.0f : -50.0f);
+        ASSERT_LT(keyedGap(timeline, 0), touches ? 1.0f : -10.0f);
+        const signer::TimelineClip clip(world().signer.rig(), timeline);
+        for (double t : {0.0, 0.25, 0.5})
+            EXPECT_LT(glm::distance(clip.postureAt(t).rightWrist->wristMm, keyedRightWrist(timeline, t)), 1e-3f)
+                << apart << " mm apart at " << t << " s";
+    }
+}
+
+// Signs of the default lexicon that do not yet keep the rule alone in citation form, each held
+// at what it does now (mm, to 0.5 mm); remove a line when the sign's data is fixed. LOSE:
+// its keys turn the hands from palms up to palms down while the spread fingers point at each
+// other, so halfway the fingers pass through each other along their length (data: a key
+// between, with the hands apart). MORE: "fingertips" of the O hands with the fingers pointing
+// at each other puts the curled fingers' tips on the midline and the knuckles past it (data:
+// the fingers forward, fingertips facing).
+struct KnownSign {
+    const char* sign;
+    float gapMm;
+};
+const KnownSign kSinksIn[] = {{"LOSE", -13.0f}, {"MORE", -14.0f}};
+// Signs that say they touch with both hands and never come within 10 mm (issue 22: four signs
+// declare contact they never make): NICE's hands stay 15 mm apart, MORNING's 89 mm, WHEN's
+// 127 mm (data: the contact, or the places).
+const KnownSign kNeverReach[] = {{"NICE", 15.5f}, {"MORNING", 89.5f}, {"WHEN", 127.5f}};
+
+TEST(Touch, EveryLexiconSignThatTouchesWithBothHandsComesToTheSurfaceAlone) {
+    // Each sign alone in citation form, as `signstim sign GLOSS` signs it (rests of 0.3 s,
+    // rate 1), every frame at 30 fps and at its keys' ends: the touch goes no deeper than
+    // kContactDepthToleranceMm, and reaches the other hand within 10 mm (issue 22).
+    const World& w = world();
+    const signer::SignerRig& rig = w.signer.rig();
+    std::string deep, apart;
+    int checked = 0;
+    for (const stimuli::LexiconSign& sign : w.lexicon.signs) {
+        if (!sign.contact.hands) continue;
+        stimuli::Story story;
+        story.file = "sign " + sign.gloss;
+        stimuli::StorySentence sentence;
+        stimuli::StoryItem item;
+        item.kind = stimuli::StoryItemKind::Sign;
+        item.gloss = sign.gloss;
+        sentence.gloss = sign.gloss;
+        sentence.items.push_back(item);
+        story.sentences.push_back(sentence);
+        stimuli::TimelineOptions timing;
+        timing.signScale = 1.0;
+        timing.restSeconds = 0.3;
+        const signer::TimelineClip clip(rig, stimuli::buildTimeline(story, stimuli::VerbVersion::Point, w.sources(), timing));
+        const float gap = signer::checkClearance(clip.timeline(), signer::clearanceFrames(rig, clip)).handsInContactSigns.gapMm;
+        ++checked;
+        const auto known = [&](const auto& list) {
+            for (const KnownSign& k : list)
+                if (sign.gloss == k.sign) return std::optional<float>(k.gapMm);
+            return std::optional<float>();
+        };
+        char line[120];
+        std::snprintf(line, sizeof line, "\n  %s: %.1f mm", sign.gloss.c_str(), gap);
+        const std::optional<float> sinks = known(kSinksIn), reaches = known(kNeverReach);
+        if (gap < (sinks ? *sinks : -signer::kContactDepthToleranceMm)) deep += line;
+        if (gap > (reaches ? *reaches : 10.0f)) apart += line;
+    }
+    EXPECT_GT(checked, 30);
+    EXPECT_TRUE(deep.empty()) << "deeper than " << signer::kContactDepthToleranceMm << " mm into the other hand:" << deep;
+    EXPECT_TRUE(apart.empty()) << "never within 10 mm of the other hand:" << apart;
+}
