@@ -403,6 +403,9 @@ hand::ArmPose SignerRig::solveArm(hand::Side side, const SignerPosture& posture)
     hand::ArmSolveOptions options;
     options.previousElbowDirection = right ? posture.rightElbowHint : posture.leftElbowHint;
     options.maxSwivelStepDeg = kElbowHintWindowDeg;
+    options.wristAnglesDeg = right ? posture.rightWristAnglesDeg : posture.leftWristAnglesDeg;
+    // In a transition (wrist angles given) the swivel is pulled to its hint (issue 21).
+    options.hintWeight = options.wristAnglesDeg ? kTransitionHintWeight : 0.0f;
     return hand::solveArm(raisedArm(side, posture.nonManual), target, options);
 }
 

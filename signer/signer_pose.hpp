@@ -139,11 +139,20 @@ struct SignerPosture {
     // kElbowHintWindowDeg of it, so the elbow moves smoothly between keys however the cost's
     // basins shift. Absent: the solver's rule of the target alone.
     std::optional<glm::vec3> rightElbowHint, leftElbowHint;
+    // The wrist's angles (hand::ArmSolveOptions::wristAnglesDeg: supination, flexion, ulnar
+    // deviation), blended from the keys' solutions as the elbow hints are: the hand turns in
+    // the joints' space between keys. Absent: the wrist reaches for the target's orientation.
+    std::optional<glm::vec3> rightWristAnglesDeg, leftWristAnglesDeg;
     NonManualPosture nonManual;  // face, head, torso and shoulders
 };
 
 // [D] How far from a posture's elbow hint the arm solver may swing the elbow.
 inline constexpr float kElbowHintWindowDeg = 20.0f;
+// [D] Where a posture gives the wrist's angles (a transition between items), how strongly the
+// swivel is pulled to its hint (hand::ArmSolveOptions::hintWeight, per rad²): against the
+// pole, torso and shoulder terms (slopes up to a few hundred per rad where active) it keeps
+// the elbow within a few degrees of the keys' blend, and the cost convex in the window.
+inline constexpr float kTransitionHintWeight = 1000.0f;
 
 struct PoseReport {
     hand::ArmPose right, left;

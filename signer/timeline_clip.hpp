@@ -64,7 +64,9 @@ private:
     const SignerRig* rig_;
     stimuli::Timeline timeline_;
     std::vector<Detour> detours_;  // in time order
-    std::vector<glm::vec3> rightElbows_, leftElbows_;  // per key of each track: the solver's elbow there
+    std::vector<ArmKey> rightArms_, leftArms_;  // per key of each track: the solver's arm there
+    // Per key of each track: whether the way to the next key is a transition between items.
+    std::vector<bool> rightToNextIsTransition_, leftToNextIsTransition_;
     glm::vec2 headStartDeg_{0.0f};
     std::vector<HeadMove> headMoves_;  // in time order, one after the other
 };

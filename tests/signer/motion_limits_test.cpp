@@ -251,6 +251,7 @@ TEST(MotionLimits, DISABLED_EveryStoryFrameKeepsItsWristsAndElbowsWithinTheBodys
     const Fixture& f = fixture();
     motion::MotionPeaks peaks;
     for (std::size_t i = 0; i < f.clips.size(); ++i) motion::measureClip(f.signer.rig(), *f.clips[i], f.names[i], 60.0, peaks);
+    peaks.print("default stories x versions, 60 fps:");
     expectElbowsLowAndSmooth(peaks);
     expectWristsWithinClinicalRanges(peaks);
 }
