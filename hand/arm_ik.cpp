@@ -227,7 +227,14 @@ ArmPose solveArm(const ArmModel& arm, const ArmTarget& target, const ArmSolveOpt
 
     float swivel = 0.0f;
     bool windowed = false;
-    if (options.previousElbowDirection) {
+    if (options.swivelHintDeg) {
+        const float previous = *options.swivelHintDeg * kDeg;
+        const float step = std::max(options.maxSwivelStepDeg, 0.5f) * kDeg;
+        g.hinted = true;
+        g.hintSwivel = previous;
+        swivel = searchSwivel(g, previous - step, previous + step, 1.0f * kDeg);
+        windowed = true;
+    } else if (options.previousElbowDirection) {
         const glm::vec3 prev = *options.previousElbowDirection;
         const glm::vec3 inPlane = prev - glm::dot(prev, g.axis) * g.axis;
         if (glm::length(inPlane) > 1e-3f) {

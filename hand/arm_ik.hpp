@@ -90,6 +90,11 @@ struct ArmSolveOptions {
     // the swivel moves at most maxSwivelStepDeg from it, so the elbow never flips between
     // neighbouring frames.
     std::optional<glm::vec3> previousElbowDirection;
+    // The same as a swivel angle (ArmPose::swivelDeg, about the shoulder-wrist axis from the
+    // natural pole); used instead of previousElbowDirection when set. Unlike a direction, an
+    // angle blended between two keys never passes near the shoulder-wrist axis, where the
+    // direction's projection (and so the elbow) turns fast (issue 21).
+    std::optional<float> swivelHintDeg;
     float maxSwivelStepDeg = 20.0f;
     // Pull of the swivel toward previousElbowDirection (per radian², on the cost below); 0:
     // none, the window alone. Strong (signer/signer_pose.hpp, kTransitionHintWeight), the cost

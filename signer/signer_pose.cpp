@@ -404,8 +404,9 @@ hand::ArmPose SignerRig::solveArm(hand::Side side, const SignerPosture& posture)
     options.previousElbowDirection = right ? posture.rightElbowHint : posture.leftElbowHint;
     options.maxSwivelStepDeg = kElbowHintWindowDeg;
     options.wristAnglesDeg = right ? posture.rightWristAnglesDeg : posture.leftWristAnglesDeg;
-    // In a transition (wrist angles given) the swivel is pulled to its hint (issue 21).
-    options.hintWeight = options.wristAnglesDeg ? kTransitionHintWeight : 0.0f;
+    options.swivelHintDeg = right ? posture.rightSwivelHintDeg : posture.leftSwivelHintDeg;
+    // Pulled to the hint where the posture gives the swivel (a transition between items).
+    options.hintWeight = options.swivelHintDeg ? kElbowHintWeight : 0.0f;
     return hand::solveArm(raisedArm(side, posture.nonManual), target, options);
 }
 

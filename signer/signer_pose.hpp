@@ -143,16 +143,19 @@ struct SignerPosture {
     // deviation), blended from the keys' solutions as the elbow hints are: the hand turns in
     // the joints' space between keys. Absent: the wrist reaches for the target's orientation.
     std::optional<glm::vec3> rightWristAnglesDeg, leftWristAnglesDeg;
+    // The elbow hint as a swivel angle (hand::ArmSolveOptions::swivelHintDeg), blended from
+    // the keys' settled swivels; the solver uses it instead of the direction when present.
+    std::optional<float> rightSwivelHintDeg, leftSwivelHintDeg;
     NonManualPosture nonManual;  // face, head, torso and shoulders
 };
 
 // [D] How far from a posture's elbow hint the arm solver may swing the elbow.
 inline constexpr float kElbowHintWindowDeg = 20.0f;
-// [D] Where a posture gives the wrist's angles (a transition between items), how strongly the
-// swivel is pulled to its hint (hand::ArmSolveOptions::hintWeight, per rad²): against the
-// pole, torso and shoulder terms (slopes up to a few hundred per rad where active) it keeps
-// the elbow within a few degrees of the keys' blend, and the cost convex in the window.
-inline constexpr float kTransitionHintWeight = 1000.0f;
+// [D] How strongly the swivel is pulled to its hint (hand::ArmSolveOptions::hintWeight, per
+// rad²): against the pole, torso, shoulder and wrist terms (slopes up to a few hundred per rad
+// where active) it keeps the elbow within a few degrees of the keys' settled blend, and the
+// cost convex in the window, so the elbow moves continuously (issue 21).
+inline constexpr float kElbowHintWeight = 1000.0f;
 
 struct PoseReport {
     hand::ArmPose right, left;
