@@ -97,7 +97,7 @@ struct ArmSolveOptions {
     std::optional<float> swivelHintDeg;
     float maxSwivelStepDeg = 20.0f;
     // Pull of the swivel toward previousElbowDirection (per radian², on the cost below); 0:
-    // none, the window alone. Strong (signer/signer_pose.hpp, kTransitionHintWeight), the cost
+    // none, the window alone. Strong (~1000, the signer's transitions between signs), the cost
     // is convex within the window, so the swivel is its one minimum and moves continuously
     // with the target and the hint (issue 21: no jump where two basins swap).
     float hintWeight = 0.0f;
