@@ -62,6 +62,14 @@ double amplitudeMm(const HandPose& a, const HandPose& b) {
     return std::hypot(glm::length(b.positionMm - a.positionMm), chord);
 }
 
+// The legacy preset's transition distance (the timing before issue 21, kept as it was): the
+// displacement plus the 40 mm lever times the angle the hand turns.
+double legacyTravelMm(const HandPose& a, const HandPose& b) {
+    constexpr double kHandLeverMm = 40.0;
+    const double cosHalf = std::min(1.0, std::abs(glm::dot(a.orientation, b.orientation)));
+    return glm::length(b.positionMm - a.positionMm) + kHandLeverMm * 2.0 * std::acos(cosHalf);
+}
+
 // How far the wrist travels between two hand poses, for the speed limit (SPEC §6.2 bounds the
 // wrist): a pose's position is the wrist joint's target (signer/clip.hpp,
 // armTargetFromSigningSpace) and the signer blends it along the straight line between keys,
@@ -182,17 +190,18 @@ private:
 
     // How far a hand goes from `from` to `next`: its Fitts amplitude and its wrist's travel.
     struct Travel {
-        double amplitudeMm = 0.0, wristMm = 0.0;
+        double amplitudeMm = 0.0, wristMm = 0.0, legacyMm = 0.0;
         void take(const Travel& o) {
             amplitudeMm = std::max(amplitudeMm, o.amplitudeMm);
             wristMm = std::max(wristMm, o.wristMm);
+            legacyMm = std::max(legacyMm, o.legacyMm);
         }
     };
     static Travel distanceMm(int h, const HandState& from, const TimelineKey& next) {
         const glm::dvec3 a = from.rest ? kNominalRestMm[h] : from.pose.positionMm;
         const glm::dvec3 b = next.rest ? kNominalRestMm[h] : next.pose.positionMm;
-        if (from.rest || next.rest) return {glm::length(b - a), glm::length(b - a)};
-        return {amplitudeMm(from.pose, next.pose), wristTravelMm(from.pose, next.pose)};
+        if (from.rest || next.rest) return {glm::length(b - a), glm::length(b - a), glm::length(b - a)};
+        return {amplitudeMm(from.pose, next.pose), wristTravelMm(from.pose, next.pose), legacyTravelMm(from.pose, next.pose)};
     }
 
     // The largest travel of a hand from `from` (each of the states) to the segment's start.
@@ -210,7 +219,7 @@ private:
     double transitionSeconds(const Travel& travel, const SignContact& next) const {
         const double distance = travel.amplitudeMm;
         if (!options_.fittsTransitions)
-            return std::clamp(options_.transitionBaseSeconds + distance / options_.transitionMmPerSecond,
+            return std::clamp(options_.transitionBaseSeconds + travel.legacyMm / options_.transitionMmPerSecond,
                               options_.transitionMinimumSeconds, options_.transitionMaximumSeconds);
         // MacKenzie 1992 (Fitts 1954): T = a + b·log2(1 + D/W); W smaller for a touching target.
         const double width = next.hands || next.body ? options_.fittsContactWidthMm : options_.fittsWidthMm;
