@@ -402,6 +402,9 @@ double pacedTransitionSeconds(const SignerRig& rig, const stimuli::TransitionQue
             track[0].passThrough = track[1].passThrough = false;
         }
         timeline.durationSeconds = seconds;
+        // Inside an item the clip routes nothing (TimelineClip routes only between items).
+        if (query.insideItem)
+            timeline.spans.push_back({stimuli::SpanKind::Verb, 0.0, seconds, "", 0, 0, 0.0, seconds, {}, 0});
         const TimelineClip clip(rig, std::move(timeline));
         const auto samples = static_cast<int>(std::ceil(seconds * kSamplesPerSecond));
         double peak = 0.0;
@@ -447,6 +450,7 @@ stimuli::TransitionPacer pacerOf(const SignerRig* rig, std::shared_ptr<const voi
         const auto add = [&key](const void* bytes, std::size_t size) { key.append(static_cast<const char*>(bytes), size); };
         add(&query.seconds, sizeof query.seconds);
         add(&query.peakSpeedMmPerSecond, sizeof query.peakSpeedMmPerSecond);
+        key += query.insideItem ? 'i' : 't';
         for (const auto* ends : {&query.from, &query.to})
             for (const stimuli::TimelineKey& k : *ends) {
                 const double values[] = {k.rest ? 1.0 : 0.0, k.pose.positionMm.x, k.pose.positionMm.y, k.pose.positionMm.z,

@@ -238,7 +238,11 @@ private:
     // performance, whose tempo is the version's own, is stretched alike throughout. Both hands
     // keep together: each interval between neighbouring key times of either hand gets the most
     // that a keyed stretch spanning it needs.
-    void limitSpeed(Segment& segment, bool eachStretch = false) const {
+    // `posedPath` (a verb's performance): each interval between key times where both hands are
+    // keyed (or one rests) is also timed by the sources' pacer, on the posed wrists' path (a
+    // verb's straight path can pass inside the folded arm's reach, where the arm solution
+    // pushes the wrist around: SEND from -1 to 1 peaked at 3.4 m/s with its keys at 2.45).
+    void limitSpeed(Segment& segment, bool eachStretch = false, bool posedPath = false) const {
         if (options_.peakSpeedMmPerSecond <= 0.0) return;
         std::vector<double> times;
         for (const auto& keys : segment.hands)
@@ -258,6 +262,31 @@ private:
                     if (times[i] >= keys[k].timeSeconds && times[i + 1] <= keys[k + 1].timeSeconds)
                         factor[i] = std::max(factor[i], needed);
             }
+        if (posedPath && sources_.transitions) {
+            // Both hands' keys at `t`, or nothing where a signing hand has none there.
+            const auto keysAt = [&](double t, std::array<TimelineKey, 2>& out) {
+                for (int h : {kRight, kLeft}) {
+                    const std::vector<TimelineKey>& keys = segment.hands[h];
+                    if (keys.empty()) {
+                        out[static_cast<std::size_t>(h)] = restKey(0.0);
+                        continue;
+                    }
+                    const auto found = std::find_if(keys.begin(), keys.end(),
+                                                    [t](const TimelineKey& k) { return std::abs(k.timeSeconds - t) < 1e-12; });
+                    if (found == keys.end()) return false;
+                    out[static_cast<std::size_t>(h)] = queryKey(found->rest, found->pose, found->handshape);
+                }
+                return true;
+            };
+            for (std::size_t i = 0; i + 1 < times.size(); ++i) {
+                TransitionQuery q;
+                q.seconds = times[i + 1] - times[i];
+                q.peakSpeedMmPerSecond = options_.peakSpeedMmPerSecond;
+                q.insideItem = true;
+                if (q.seconds <= 0.0 || !keysAt(times[i], q.from) || !keysAt(times[i + 1], q.to)) continue;
+                factor[i] = std::max(factor[i], sources_.transitions(q) / q.seconds);
+            }
+        }
         const double most = *std::max_element(factor.begin(), factor.end());
         if (most <= 1.0 || most >= 1e9) return;
         if (!eachStretch) std::fill(factor.begin(), factor.end(), most);
@@ -573,7 +602,7 @@ private:
                 for (const PerformanceKeyframe& k : trackOfHand.keyframes)
                     segment.hands[h].push_back(key(k.timeSeconds / rate, k.pose, k.handshape));
             }
-            limitSpeed(segment);
+            limitSpeed(segment, false, true);
             longest = std::max(longest, segment.durationSeconds);
             farthestIn.take(displacementMm({state_}, segment));
             std::array<HandState, 2> end{};

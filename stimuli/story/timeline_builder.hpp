@@ -130,6 +130,9 @@ struct TransitionQuery {
     std::array<TimelineKey, 2> from, to;
     double seconds = 0.0;
     double peakSpeedMmPerSecond = 0.0;  // TimelineOptions::peakSpeedMmPerSecond (> 0)
+    // A stretch inside an item (a verb's path between two of its keys), which the signer does
+    // not route around the hands and the body: timed on its straight blend, posed.
+    bool insideItem = false;
 };
 // How long the transition must last so that the path the hands actually take — around each
 // other and the body, which a straight blend of the keys does not know (the signer's

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <thread>
 
@@ -287,4 +288,47 @@ TEST(StoryTiming, EveryDefaultStoryAsRenderedSignsAtConversationalPace) {
         EXPECT_GE(m.signsPerSecond(), 1.7) << f.names[i];
         EXPECT_LE(m.signsPerSecond(), 2.3) << f.names[i];
     }
+}
+
+// A verb slot is as long as the longest of the versions' paths at human speed (timeline_builder.hpp):
+// every verb, subject and object over -1..1 in steps of 0.5, told in a one-sentence story
+// (synthetic: two fingerspelled characters placed, then "AL VERB ED"), in the point, vector and uninflected
+// versions (the animator files cover only the default stories' instances), posed at 60 fps.
+TEST(MotionLimits, EveryVerbSlotKeepsItsWristsWithinSpec62) {
+    const Fixture& f = fixture();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                      ("signstim-verb-slots-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::create_directories(dir);
+    motion::MotionPeaks peaks;
+    std::size_t slots = 0;
+    const std::vector<stimuli::VerbVersion> versions{stimuli::VerbVersion::Point, stimuli::VerbVersion::Vector,
+                                                     stimuli::VerbVersion::Uninflected};
+    for (const auto& verb : f.world.verbs.verbs)
+        for (int s = -2; s <= 2; ++s)
+            for (int o = -2; o <= 2; ++o) {
+                if (s == o) continue;
+                char text[512];
+                std::snprintf(text, sizeof text,
+                              R"json({"format": "signstim-story", "version": 1, "title": "synthetic verb slot",
+ "characters": [{"gloss": "AL", "position": %.1f}, {"gloss": "ED", "position": %.1f}],
+ "sentences": ["AL IX(%.1f)", "ED IX(%.1f)", "AL %s ED"], "questions": []})json",
+                              s / 2.0, o / 2.0, s / 2.0, o / 2.0, verb.name.c_str());
+                const std::filesystem::path file = dir / (verb.name + "_" + std::to_string(s) + "_" + std::to_string(o) + ".json");
+                { std::ofstream(file) << text; }
+                const stimuli::Story story = f.world.loadStory(file);
+                stimuli::TimelineSources sources = f.world.sources(story);
+                sources.transitions = signer::transitionPacer(f.signer.rig());
+                sources.slotVersions = versions;
+                for (const stimuli::VerbVersion v : versions) {
+                    const signer::TimelineClip clip(f.signer.rig(), stimuli::buildTimeline(story, v, sources));
+                    motion::measureClip(f.signer.rig(), clip, verb.name + " " + stimuli::toString(v) + " s=" +
+                                                                  std::to_string(s / 2.0) + " o=" + std::to_string(o / 2.0),
+                                        60.0, peaks);
+                    ++slots;
+                }
+            }
+    std::filesystem::remove_all(dir);
+    std::printf("%zu verb slots: peak wrist speed %.0f mm/s at %s\n", slots, peaks.wristSpeedMmPerSecond.value,
+                peaks.wristSpeedMmPerSecond.where.c_str());
+    EXPECT_LE(peaks.wristSpeedMmPerSecond.value, kWristSpeedMmPerSecond) << peaks.wristSpeedMmPerSecond.where;
 }
