@@ -127,11 +127,10 @@ TEST(MotionLimits, GazeIsEyesAndHeadWithinTheirRangesAndTheHeadsSpeed) {
 
 // Fails today like the stories' test, and the wrists peak at 4.65 m/s in verbs between far
 // loci (SEND point s=-1 o=1 at 0.68 s; measured 2026-11-26): a VerbClip plays the synthesis's
-// own timing, with no speed limit. In a story the slot's keys are slowed to 2.45 m/s
-// (timeline_builder.hpp) and its transitions paced by the posed path, but the posed wrist of
-// that SEND still peaks at 3.38 m/s: its straight path passes ~130 mm from the right shoulder
-// joint, inside the folded arm's reach, and the arm solution pushes the wrist around it. Open:
-// pace verb paths by the posed wrist too (as signer::transitionPacer does transitions).
+// own timing, with no speed limit (its straight path passes ~130 mm from the right shoulder
+// joint, inside the folded arm's reach, and the arm solution pushes the wrist around it). In a
+// story the slot is paced by the posed wrists' path (3.38 -> 2.45 m/s for that SEND):
+// EveryVerbSlotKeepsItsWristsWithinSpec62 below.
 TEST(MotionLimits, DISABLED_EveryVerbInstanceKeepsItsWristsAndElbowsWithinTheBodysLimits) {
     // All 8 verbs; subject and object over -1..1 in steps of 0.1 (s != o where the verb has
     // both); point, vector, uninflected; animator where its file exists. Two threads.
