@@ -130,7 +130,11 @@ void registerSignCommand(Commands& commands) {
     sign->add_option("--lexicon", o->lexicon, "A lab's own lexicon on top of SCENES/lexicon/ (as for `story`)");
     sign->add_flag("--quiet", o->quiet, "No progress on stderr");
     sign->callback([o] {
-        const StoryWorld world(o->scenesDir, o->lexicon);
+        StoryWorld pacedWorld(o->scenesDir, o->lexicon);
+        // Issue 21: transitions paced by the path the signer's hands take, as in a story.
+        pacedWorld.transitionPacer =
+            signer::transitionPacer(std::make_shared<const signer::Signer>(pacedWorld.scenes));
+        const StoryWorld& world = pacedWorld;
         const LexiconSign* found = world.lexicon.find(o->gloss);
         if (!found) {
             std::string known;

@@ -242,7 +242,10 @@ void registerStoryCommands(Commands& commands) {
             throw commandLineError("--annotations", "goes with --out FILE.mp4 (the regions and ELAN file sit beside the clip)");
         std::optional<VerbVersion> version;
         if (!o->check) version = requireVersion(*o);
-        const StoryWorld world(o->scenesDir, o->lexiconFile);
+        StoryWorld pacedWorld(o->scenesDir, o->lexiconFile);
+        // Issue 21: transitions paced by the path the signer's hands take (detours included).
+        pacedWorld.transitionPacer = transitionPacer(std::make_shared<const Signer>(pacedWorld.scenes));
+        const StoryWorld& world = pacedWorld;
         const Story story = world.loadStory(o->file);
         std::string preset;
         const TimelineOptions timing = storyTiming(*o, story, &preset);

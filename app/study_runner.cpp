@@ -8,6 +8,8 @@
 #include "common/error.hpp"
 #include "common/file_manifest.hpp"
 #include "signer/avatar_render.hpp"
+#include "signer/signer.hpp"
+#include "signer/timeline_clip.hpp"
 #include "stimuli/json_source.hpp"
 #include "stimuli/scenes_path.hpp"
 #include "stimuli/study/study_experiment.hpp"
@@ -53,6 +55,9 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
     const fs::path studyFile = options.studyFile.empty() ? defaultStudyFile(scenes) : options.studyFile;
     s.study = loadStudyFile(studyFile);
     s.world = std::make_unique<StoryWorld>(options.scenesDir, options.lexicon);
+    // Issue 21: transitions paced by the path the default signer's hands take (detours
+    // included), the same whatever avatar renders them.
+    s.world->transitionPacer = signer::transitionPacer(std::make_shared<const signer::Signer>(s.world->scenes));
     const StudyFile& study = s.study;
     for (std::size_t i = 0; i < study.stories.size(); ++i) {
         Story story = loadNamedStory(*s.world, study, study.stories[i], "/stories/" + std::to_string(i));

@@ -38,11 +38,15 @@
 // left alone.
 #include "signer/clip.hpp"
 #include "stimuli/story/timeline.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 namespace signstim::signer {
+
+class Signer;
 
 class TimelineClip final : public Clip {
 public:
@@ -110,15 +114,37 @@ inline constexpr double kTouchFramesPerSecond = 60.0;
 // [D] How fast a settled touch's offset may grow or shrink: 0.3 m/s, an eighth of SPEC §6.2's
 // 2.5 m/s peak wrist speed, so that settling does not make a sign's wrist faster than human.
 inline constexpr double kTouchRateMmPerSecond = 300.0;
-// [D] A transition's clearance is checked at this many instants per second of the timeline (a
+// [D] A transition's clearance is checked at this many instants per second from its start (a
 // grid of the timeline's own time, not of any output's frames: the detour, like every pose,
-// depends on the timeline alone).
+// depends on the timeline alone; and on the transition alone, not where it falls).
 inline constexpr double kRoutingFramesPerSecond = 30.0;
 
 // [S] Peak head angular speed in gaze shifts: up to ~300°/s for large shifts (Freedman &
 // Sparks 1997; Goossens & Van Opstal 1997). [D] Planned at 250°/s, so the yaw-pitch turn
 // stays under 300°/s.
 inline constexpr double kHeadPeakDegPerSecond = 250.0;
+
+// The timeline builder's pacer of transitions (stimuli::TransitionPacer; issue 21, SPEC §6.2):
+// the transition of the query played as a TimelineClip of its two ends — straight blend,
+// routed around the hands and the body exactly as in a story — and its drawn wrists' peak
+// speed measured (the arm solution's, every 1/240 s); while it peaks above the query's
+// limit the transition is lengthened in proportion (at least 5 % a step, at most
+// kPacerSteps steps) and routed again, since a longer transition allows a gentler detour;
+// then the shortest length that keeps the limit is sought between the last two (bisection). So
+// a transition's pace comes from the path the wrists actually travel, detour included, and
+// stimuli/ needs to know nothing of the body. A transition the clip routes inside a story is
+// the same: its ends are the same keys (a coarticulated end, which keeps a neighbour's
+// velocity, differs a little; the timing's 2.45 m/s under SPEC §6.2's 2.5 m/s covers it).
+// Remembers what it answered (the builder asks again for every version); safe to call
+// from several threads. The pacer keeps `signer` alive.
+stimuli::TransitionPacer transitionPacer(std::shared_ptr<const Signer> signer);
+// The same with a rig that outlives the pacer (tests that hold a Signer).
+stimuli::TransitionPacer transitionPacer(const SignerRig& rig);
+// The seconds the query's transition needs (what the pacer answers, without its memory).
+double pacedTransitionSeconds(const SignerRig& rig, const stimuli::TransitionQuery& query);
+// [D] How many times the pacer lengthens a transition at most (by 5 % or more each: at least
+// 1.05^12 ≈ 1.8 times, in practice what the peak asks for in one or two steps).
+inline constexpr int kPacerSteps = 12;
 
 // The timeline's non-manual channels at `seconds` (stimuli::sampleNonManual of each track;
 // unknown head/torso/shoulder names are ignored, as a body that cannot show them would). A pure

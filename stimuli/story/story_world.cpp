@@ -39,6 +39,7 @@ TimelineSources StoryWorld::sources(const Story& story) const {
     TimelineSources s;
     s.lexicon = &lexicon;
     s.shapes = &shapes;
+    s.transitions = transitionPacer;
     s.verbs = [this, &story](const std::string& verb, VerbVersion version, double subject, double object, int line,
                              int column) {
         try {

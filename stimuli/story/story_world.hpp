@@ -27,6 +27,9 @@ struct StoryWorld {
     // Whether an animator file marked "draft" may be used: yes for a story (a preview); a
     // study sets it from --allow-draft-animator. Refused: InputError naming the file's /draft.
     bool allowDraftAnimator = true;
+    // Given to every timeline's sources (TimelineSources::transitions): the signer's pacing of
+    // transitions by their detours (app/ sets signer::transitionPacer; empty: none).
+    stimuli::TransitionPacer transitionPacer;
 
     // `scenesDir` empty: resolveScenesDir's default. `lexicon`: a lab's own lexicon that adds to
     // SCENES/lexicon/ and overrides its signs of the same gloss (empty: the default alone).

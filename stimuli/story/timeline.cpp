@@ -36,6 +36,7 @@ struct Segment {
 struct HandState {
     bool rest = true;
     HandPose pose;
+    std::string handshape;
 };
 
 glm::dquat orientationOf(const glm::dvec3& fingers, const glm::dvec3& palm) { return orientationFromFingersPalm(fingers, palm); }
@@ -48,15 +49,34 @@ TimelineKey key(double t, const HandPose& pose, const std::string& shape) {
     return k;
 }
 
-// How far the wrist travels between two hand poses, at most: the hand's reference point's
-// displacement plus the arc the wrist swings as the hand turns about it [D: the wrist sits
-// ~40 mm from the palm's reference point]. Used for the speed limit (SPEC §6.2 bounds the
-// wrist, not the palm).
-double wristTravelMm(const HandPose& a, const HandPose& b) {
-    constexpr double kWristLeverMm = 40.0;
-    const double cosHalf = std::min(1.0, std::abs(glm::dot(a.orientation, b.orientation)));
-    return glm::length(b.positionMm - a.positionMm) + kWristLeverMm * 2.0 * std::acos(cosHalf);
+// A movement's amplitude for its Fitts time: how far a point of the hand ~40 mm from the wrist
+// goes [D: a turn of the hand is part of what the movement must bring to its target]. That
+// point moves by the wrist's displacement plus the chord its lever sweeps as the hand turns;
+// over the lever's directions the two add in quadrature on average (root mean square), so the
+// amplitude is sqrt(D² + c²), not the worst case D + c (which until issue 21's pace work
+// counted every turn as if it pointed along the movement, and the arc rather than the chord).
+double amplitudeMm(const HandPose& a, const HandPose& b) {
+    constexpr double kHandLeverMm = 40.0;
+    const double sinHalf = std::sqrt(std::max(0.0, 1.0 - std::pow(std::min(1.0, std::abs(glm::dot(a.orientation, b.orientation))), 2)));
+    const double chord = kHandLeverMm * 2.0 * sinHalf;
+    return std::hypot(glm::length(b.positionMm - a.positionMm), chord);
 }
+
+// The legacy preset's transition distance (the timing before issue 21, kept as it was): the
+// displacement plus the 40 mm lever times the angle the hand turns.
+double legacyTravelMm(const HandPose& a, const HandPose& b) {
+    constexpr double kHandLeverMm = 40.0;
+    const double cosHalf = std::min(1.0, std::abs(glm::dot(a.orientation, b.orientation)));
+    return glm::length(b.positionMm - a.positionMm) + kHandLeverMm * 2.0 * std::acos(cosHalf);
+}
+
+// How far the wrist travels between two hand poses, for the speed limit (SPEC §6.2 bounds the
+// wrist): a pose's position is the wrist joint's target (signer/clip.hpp,
+// armTargetFromSigningSpace) and the signer blends it along the straight line between keys,
+// so the wrist travels the positions' distance whatever the hand's turn. (Until issue 21's
+// pace work the turn was added as a 40 mm lever here too: turning keys were paced as if the
+// wrist swung, ~10-30 % slower than the wrist needs.)
+double wristTravelMm(const HandPose& a, const HandPose& b) { return glm::length(b.positionMm - a.positionMm); }
 
 HandPose poseAt(const glm::dvec3& position, const glm::dquat& orientation) {
     HandPose pose;
@@ -107,8 +127,10 @@ public:
             std::size_t lastSigned = sentence.items.size();
             for (std::size_t i = 0; i < sentence.items.size(); ++i)
                 if (sentence.items[i].kind != StoryItemKind::Hold) lastSigned = i;
+            double lastSignEnd = now_;  // where the last signed item's keys end
             for (std::size_t i = 0; i < sentence.items.size(); ++i) {
                 addItem(sentence.items[i], static_cast<int>(s), static_cast<int>(i), i == lastSigned);
+                if (i == lastSigned) lastSignEnd = now_;
                 // SPEC §6.4: a y/n question's last sign held, as part of the item (nonmanuals.hpp).
                 if (const double held = markerHoldSeconds(sentence, static_cast<int>(i)); held > 0.0)
                     hold(held / options_.rate, timeline_.spans.back().label, static_cast<int>(s), static_cast<int>(i));
@@ -126,9 +148,13 @@ public:
             } else if (boundaryHold_ > 0.0) {
                 // SPEC §6.3: the last sign held at the boundary; the next sentence goes on from it.
                 // Labelled with the sign it holds: the hold is that sign prolonged (what it
-                // touches, it keeps touching).
+                // touches, it keeps touching). A sentence that already ends in a hold (a y/n
+                // question's held last sign, SPEC §6.4; a HOLD) has its boundary hold in it:
+                // the holds do not add up, the boundary hold only tops it up to its length
+                // (until issue 21's pace work they were added: story-01's question held 0.55 s).
                 const std::string held = timeline_.spans.empty() ? "HOLD" : timeline_.spans.back().label;
-                hold(boundaryHold_ / options_.rate, held, static_cast<int>(s), -1);
+                const double topUp = boundaryHold_ / options_.rate - (now_ - lastSignEnd);
+                if (topUp > 1e-9) hold(topUp, held, static_cast<int>(s), -1);
             }
         }
         timeline_.durationSeconds = now_;
@@ -162,28 +188,38 @@ private:
         timeline_.gaze.push_back({t, target});
     }
 
-    static double distanceMm(int h, const HandState& from, const TimelineKey& next) {
+    // How far a hand goes from `from` to `next`: its Fitts amplitude and its wrist's travel.
+    struct Travel {
+        double amplitudeMm = 0.0, wristMm = 0.0, legacyMm = 0.0;
+        void take(const Travel& o) {
+            amplitudeMm = std::max(amplitudeMm, o.amplitudeMm);
+            wristMm = std::max(wristMm, o.wristMm);
+            legacyMm = std::max(legacyMm, o.legacyMm);
+        }
+    };
+    static Travel distanceMm(int h, const HandState& from, const TimelineKey& next) {
         const glm::dvec3 a = from.rest ? kNominalRestMm[h] : from.pose.positionMm;
         const glm::dvec3 b = next.rest ? kNominalRestMm[h] : next.pose.positionMm;
-        if (from.rest || next.rest) return glm::length(b - a);
-        return wristTravelMm(from.pose, next.pose);
+        if (from.rest || next.rest) return {glm::length(b - a), glm::length(b - a), glm::length(b - a)};
+        return {amplitudeMm(from.pose, next.pose), wristTravelMm(from.pose, next.pose), legacyTravelMm(from.pose, next.pose)};
     }
 
-    // The largest displacement of a hand from `from` (each of the states) to the segment's start.
-    static double displacementMm(const std::vector<std::array<HandState, 2>>& from, const Segment& segment) {
-        double distance = 0.0;
+    // The largest travel of a hand from `from` (each of the states) to the segment's start.
+    static Travel displacementMm(const std::vector<std::array<HandState, 2>>& from, const Segment& segment) {
+        Travel travel;
         for (const auto& state : from)
             for (int h : {kRight, kLeft}) {
                 const TimelineKey first = segment.hands[h].empty() ? restKey(0.0) : segment.hands[h].front();
-                distance = std::max(distance, distanceMm(h, state[h], first));
+                travel.take(distanceMm(h, state[h], first));
             }
-        return distance;
+        return travel;
     }
 
     // How long a transition over `distance` takes toward an item touching (or not).
-    double transitionSeconds(double distance, const SignContact& next) const {
+    double transitionSeconds(const Travel& travel, const SignContact& next) const {
+        const double distance = travel.amplitudeMm;
         if (!options_.fittsTransitions)
-            return std::clamp(options_.transitionBaseSeconds + distance / options_.transitionMmPerSecond,
+            return std::clamp(options_.transitionBaseSeconds + travel.legacyMm / options_.transitionMmPerSecond,
                               options_.transitionMinimumSeconds, options_.transitionMaximumSeconds);
         // MacKenzie 1992 (Fitts 1954): T = a + b·log2(1 + D/W); W smaller for a touching target.
         const double width = next.hands || next.body ? options_.fittsContactWidthMm : options_.fittsWidthMm;
@@ -192,7 +228,7 @@ private:
         double t = std::clamp(fitts, options_.transitionMinimumSeconds / options_.rate,
                               options_.transitionMaximumSeconds / options_.rate);
         // SPEC §6.2: never faster than human, whatever the rate (1.875: minimum jerk's peak/mean).
-        if (options_.peakSpeedMmPerSecond > 0.0) t = std::max(t, kPeakToMean * distance / options_.peakSpeedMmPerSecond);
+        if (options_.peakSpeedMmPerSecond > 0.0) t = std::max(t, kPeakToMean * travel.wristMm / options_.peakSpeedMmPerSecond);
         return t;
     }
 
@@ -202,7 +238,11 @@ private:
     // performance, whose tempo is the version's own, is stretched alike throughout. Both hands
     // keep together: each interval between neighbouring key times of either hand gets the most
     // that a keyed stretch spanning it needs.
-    void limitSpeed(Segment& segment, bool eachStretch = false) const {
+    // `posedPath` (a verb's performance): each interval between key times where both hands are
+    // keyed (or one rests) is also timed by the sources' pacer, on the posed wrists' path (a
+    // verb's straight path can pass inside the folded arm's reach, where the arm solution
+    // pushes the wrist around: SEND from -1 to 1 peaked at 3.4 m/s with its keys at 2.45).
+    void limitSpeed(Segment& segment, bool eachStretch = false, bool posedPath = false) const {
         if (options_.peakSpeedMmPerSecond <= 0.0) return;
         std::vector<double> times;
         for (const auto& keys : segment.hands)
@@ -222,6 +262,31 @@ private:
                     if (times[i] >= keys[k].timeSeconds && times[i + 1] <= keys[k + 1].timeSeconds)
                         factor[i] = std::max(factor[i], needed);
             }
+        if (posedPath && sources_.transitions) {
+            // Both hands' keys at `t`, or nothing where a signing hand has none there.
+            const auto keysAt = [&](double t, std::array<TimelineKey, 2>& out) {
+                for (int h : {kRight, kLeft}) {
+                    const std::vector<TimelineKey>& keys = segment.hands[h];
+                    if (keys.empty()) {
+                        out[static_cast<std::size_t>(h)] = restKey(0.0);
+                        continue;
+                    }
+                    const auto found = std::find_if(keys.begin(), keys.end(),
+                                                    [t](const TimelineKey& k) { return std::abs(k.timeSeconds - t) < 1e-12; });
+                    if (found == keys.end()) return false;
+                    out[static_cast<std::size_t>(h)] = queryKey(found->rest, found->pose, found->handshape);
+                }
+                return true;
+            };
+            for (std::size_t i = 0; i + 1 < times.size(); ++i) {
+                TransitionQuery q;
+                q.seconds = times[i + 1] - times[i];
+                q.peakSpeedMmPerSecond = options_.peakSpeedMmPerSecond;
+                q.insideItem = true;
+                if (q.seconds <= 0.0 || !keysAt(times[i], q.from) || !keysAt(times[i + 1], q.to)) continue;
+                factor[i] = std::max(factor[i], sources_.transitions(q) / q.seconds);
+            }
+        }
         const double most = *std::max_element(factor.begin(), factor.end());
         if (most <= 1.0 || most >= 1e9) return;
         if (!eachStretch) std::fill(factor.begin(), factor.end(), most);
@@ -238,6 +303,37 @@ private:
         segment.durationSeconds = warp(segment.durationSeconds);
     }
 
+    // A key of the transition query: at rest, or the pose with its handshape's controls.
+    TimelineKey queryKey(bool rest, const HandPose& pose, const std::string& handshape) const {
+        if (rest) return restKey(0.0);
+        TimelineKey k = key(0.0, pose, handshape);
+        k.controls = sources_.shapes->at(handshape).controls;
+        return k;
+    }
+
+    // SPEC §6.2: the transition from each of `from` to the start of each of `to` lasts long
+    // enough for the path the hands take around each other and the body (the sources' pacer,
+    // where there is one): at least `seconds`, the most any pair needs.
+    double paced(double seconds, const std::vector<std::array<HandState, 2>>& from,
+                 const std::vector<const Segment*>& to) const {
+        if (!sources_.transitions || options_.peakSpeedMmPerSecond <= 0.0) return seconds;
+        double needed = seconds;
+        for (const auto& state : from)
+            for (const Segment* segment : to) {
+                TransitionQuery q;
+                q.seconds = seconds;
+                q.peakSpeedMmPerSecond = options_.peakSpeedMmPerSecond;
+                for (int h : {kRight, kLeft}) {
+                    q.from[static_cast<std::size_t>(h)] = queryKey(state[h].rest, state[h].pose, state[h].handshape);
+                    const std::vector<TimelineKey>& keys = segment->hands[h];
+                    q.to[static_cast<std::size_t>(h)] =
+                        keys.empty() ? restKey(0.0) : queryKey(keys.front().rest, keys.front().pose, keys.front().handshape);
+                }
+                needed = std::max(needed, sources_.transitions(q));
+            }
+        return needed;
+    }
+
     // Appends `segment` after a transition, records its span and the gaze during it.
     // `verbTransition`: for a verb, the transition into its slot (the same in every version).
     void place(const Segment& segment, SpanKind kind, const std::string& label, int sentence, int item,
@@ -252,9 +348,10 @@ private:
             // slot ends at the same time in every version.
             transition = options_.verbTransitionSeconds > 0.0
                              ? options_.verbTransitionSeconds
-                             : transitionSeconds(displacementMm(slotEnds_, segment), segment.contact);
+                             : paced(transitionSeconds(displacementMm(slotEnds_, segment), segment.contact), slotEnds_,
+                                     {&segment});
         } else {
-            transition = transitionSeconds(displacementMm({state_}, segment), segment.contact);
+            transition = paced(transitionSeconds(displacementMm({state_}, segment), segment.contact), {state_}, {&segment});
         }
         const double start = now_ + transition;
         for (int h : {kRight, kLeft}) {
@@ -271,6 +368,7 @@ private:
             const TimelineKey& last = segment.hands[h].back();
             state_[h].rest = last.rest;
             state_[h].pose = last.pose;
+            state_[h].handshape = last.handshape;
         }
         const double end = start + segment.durationSeconds;
         const bool continuesSlot = verbSlotOpen_ && kind == SpanKind::Rest && !isVerb;
@@ -483,7 +581,8 @@ private:
         double longest = 0.0;
         Segment mine;
         std::vector<std::array<HandState, 2>> ends;
-        double farthestIn = 0.0;
+        Travel farthestIn;
+        std::vector<Segment> versions;  // each version's performance (for its first keys)
         for (VerbVersion v : sources_.slotVersions) {
             VerbPerformance p;
             try {
@@ -503,14 +602,16 @@ private:
                 for (const PerformanceKeyframe& k : trackOfHand.keyframes)
                     segment.hands[h].push_back(key(k.timeSeconds / rate, k.pose, k.handshape));
             }
-            limitSpeed(segment);
+            limitSpeed(segment, false, true);
             longest = std::max(longest, segment.durationSeconds);
-            farthestIn = std::max(farthestIn, displacementMm({state_}, segment));
+            farthestIn.take(displacementMm({state_}, segment));
             std::array<HandState, 2> end{};
             for (int h : {kRight, kLeft})
-                if (!segment.hands[h].empty()) end[h] = HandState{false, segment.hands[h].back().pose};
+                if (!segment.hands[h].empty())
+                    end[h] = HandState{false, segment.hands[h].back().pose, segment.hands[h].back().handshape};
             ends.push_back(end);
-            if (v == version_) mine = std::move(segment);
+            if (v == version_) mine = segment;
+            versions.push_back(std::move(segment));
         }
         mine.durationSeconds = longest;
         for (auto& keys : mine.hands) {
@@ -521,8 +622,11 @@ private:
                 keys.push_back(pad);
             }
         }
-        const double in = options_.verbTransitionSeconds > 0.0 ? options_.verbTransitionSeconds
-                                                                : transitionSeconds(farthestIn, mine.contact);
+        std::vector<const Segment*> starts;
+        for (const Segment& segment : versions) starts.push_back(&segment);
+        const double in = options_.verbTransitionSeconds > 0.0
+                              ? options_.verbTransitionSeconds
+                              : paced(transitionSeconds(farthestIn, mine.contact), {state_}, starts);
         place(mine, SpanKind::Verb, item.gloss, sentence, index, arcPoint(object), in);
         slotEnds_ = std::move(ends);
     }

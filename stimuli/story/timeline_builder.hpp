@@ -8,6 +8,7 @@
 #include "stimuli/story/timing.hpp"
 #include "stimuli/verbs/verb_synthesis.hpp"
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -59,11 +60,14 @@ struct TimelineOptions {
     double transitionMinimumSeconds = 0.1;
     double transitionMaximumSeconds = 0.6;
     // [D, SPEC §6.2: wrist ≤ 2.5 m/s] No keyed stretch is faster than this at its peak
-    // (1.875 × its mean speed under the easing, sampleTrack), the wrist's travel counted as
-    // the hand's displacement plus its swing as the hand turns: transitions, signs and verb
-    // paths are lengthened where they would be. Kept below 2.5 m/s for what the arm solution
-    // and the signer's detours add (measured: `story --check`). 0: no limit (legacy).
-    double peakSpeedMmPerSecond = 2300.0;
+    // (1.875 × its mean speed under the easing, sampleTrack), the wrist's travel being its
+    // target's straight displacement (wristTravelMm): transitions, signs and verb paths are
+    // lengthened where they would be, and transitions also where the path the signer's hands
+    // actually take (detours around the hands and body, the arm solution) would peak above it
+    // (TimelineSources::transitions). 0.05 m/s under SPEC's bound for what 60-120 Hz sampling
+    // and a coarticulated end add (measured: `story --check`, tests/signer/motion_limits_test;
+    // 2.3 m/s before the transitions were paced by the signer's path). 0: no limit (legacy).
+    double peakSpeedMmPerSecond = 2450.0;
     // Hands pass through the keys of a continuing movement (coarticulation; sampleTrack)
     // instead of stopping at every key. Legacy: false.
     bool coarticulation = true;
@@ -119,10 +123,31 @@ TimelineMeasures measureTimeline(const Timeline& timeline);
 using VerbProvider = std::function<VerbPerformance(const std::string& verb, VerbVersion version, double subject,
                                                    double object, int line, int column)>;
 
+// A transition between two items, as plain values, for whoever knows the body (issue 21): the
+// hands' keys where it starts and where it ends ([0] right, [1] left; a key at rest, or a pose
+// with its handshape's controls) and the time the timing gives it.
+struct TransitionQuery {
+    std::array<TimelineKey, 2> from, to;
+    double seconds = 0.0;
+    double peakSpeedMmPerSecond = 0.0;  // TimelineOptions::peakSpeedMmPerSecond (> 0)
+    // A stretch inside an item (a verb's path between two of its keys), which the signer does
+    // not route around the hands and the body: timed on its straight blend, posed.
+    bool insideItem = false;
+};
+// How long the transition must last so that the path the hands actually take — around each
+// other and the body, which a straight blend of the keys does not know (the signer's
+// clearance detours, signer/timeline_clip.hpp) — peaks no faster than the speed limit: at
+// least `query.seconds`. A pure function of the query (the same in every version for the same
+// ends), so that equal transitions stay equally long.
+using TransitionPacer = std::function<double(const TransitionQuery& query)>;
+
 struct TimelineSources {
     const Lexicon* lexicon = nullptr;
     const HandshapeLibrary* shapes = nullptr;
     VerbProvider verbs;
+    // Optional: paces transitions by the path the signer's hands take (signer::transitionPacer).
+    // Empty: by the straight blend of the keys alone (what the timeline can know by itself).
+    TransitionPacer transitions;
     // The versions whose slots must be equally long: all four for a study. `version` must be
     // one of them.
     std::vector<VerbVersion> slotVersions{VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator,

@@ -200,12 +200,13 @@ TEST(StoryCli, CheckReportsEachVersionsPaceAndPeakWristSpeedWithinTheLimit) {
             EXPECT_NE(line.find("pauses "), std::string::npos) << line;
             EXPECT_NE(line.find("peak head "), std::string::npos) << line;
             EXPECT_GT(duration, telling);
-            EXPECT_GT(signs, 1.3) << line;
-            // SPEC §6.2 bounds the wrist at 2.5 m/s; the timeline keeps the hand's reference point
-            // under 2.3 m/s (tests/stimuli/story_timing_test.cpp), and the posed wrist, with the
-            // arm solution and the detours, peaks up to ~3.2 m/s in a few transitions and verb
-            // paths (docs/stories.md): reported, and bounded here against regressions.
-            EXPECT_LE(wrist, 3.5) << file << ": " << line;
+            // SPEC §6.3: conversational pace (1.81 and 1.87 signs/s measured 2026-11-26).
+            EXPECT_GE(signs, 1.7) << line;
+            EXPECT_LE(signs, 2.3) << line;
+            // SPEC §6.2 bounds the wrist at 2.5 m/s: the timeline keeps its keyed stretches under
+            // 2.45 m/s, and paces each transition by the posed wrists' path, detours included
+            // (signer::transitionPacer; tests/signer/motion_limits_test.cpp).
+            EXPECT_LE(wrist, 2.5) << file << ": " << line;
             EXPECT_GT(wrist, 0.5) << line;
             ++versions;
         }

@@ -39,6 +39,8 @@ struct World {
     stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(kScenes / "verbs.json");
     stimuli::TrainedVerbModels models = stimuli::loadVerbModels(kScenes / "models" / "verb_models.json", verbs);
     stimuli::Lexicon lexicon = stimuli::loadLexicon(kScenes / "lexicon", shapes, signer.rig().handModel());
+    // As `signstim story` and `study` build timelines: transitions paced by the signer's path.
+    stimuli::TransitionPacer pacer = signer::transitionPacer(signer.rig());
 
     stimuli::TimelineSources sources() const {
         stimuli::TimelineSources s;
@@ -48,6 +50,7 @@ struct World {
             return stimuli::synthesizeVerb(stimuli::VerbSources{&verbs, &models, kScenes / "animator", &shapes},
                                            verb, version, subject, object);
         };
+        s.transitions = pacer;
         return s;
     }
     stimuli::Story story(const std::filesystem::path& file) const {

@@ -171,7 +171,7 @@ TEST(StoryTiming, NoStretchOfAnyVersionPeaksAboveTheWristSpeedLimit) {
                     const auto a = handAt(*track, time), b = handAt(*track, time + 0.002);
                     if (a && b) peak = std::max(peak, glm::distance(*a, *b) / 0.002);
                 }
-            EXPECT_LE(peak, 2300.0 * 1.001) << n << " " << toString(v);
+            EXPECT_LE(peak, TimelineOptions{}.peakSpeedMmPerSecond * 1.001) << n << " " << toString(v);
             EXPECT_GT(peak, 500.0) << n << " " << toString(v);
         }
     }
