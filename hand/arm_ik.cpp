@@ -69,8 +69,6 @@ struct Geometry {
     const ArmSolveOptions* options;
     glm::vec3 shoulder, wrist, axis, ref0, ref1;
     float cosAlpha, sinAlpha;  // angle at the shoulder between the axis and the upper arm
-    bool hinted = false;       // the swivel is pulled toward `hintSwivel` (radians)
-    float hintSwivel = 0.0f;
 };
 
 Candidate evaluate(const Geometry& g, float swivel) {
@@ -98,11 +96,7 @@ Candidate evaluate(const Geometry& g, float swivel) {
                           raised * rangeExcessDeg(c.planeDeg, arm.limits.shoulderPlane);
 
     c.wrist = wristAngles(arm.side, c.forearm, g.target->handRotation);
-    if (g.options->wristAnglesDeg) {
-        const glm::vec3& held = *g.options->wristAnglesDeg;
-        c.wrist = {held.x, held.y, held.z};
-    }
-    const float wristCost = g.options->wristAnglesDeg ? 0.0f : comfort(c.wrist.supinationDeg, arm.limits.supination) +
+    const float wristCost = comfort(c.wrist.supinationDeg, arm.limits.supination) +
                             comfort(c.wrist.flexionDeg, arm.limits.wristFlexion) +
                             comfort(c.wrist.ulnarDeviationDeg, arm.limits.wristUlnarDeviation);
     const float s = wrapPi(swivel);
@@ -117,10 +111,6 @@ Candidate evaluate(const Geometry& g, float swivel) {
              g.options->shoulderLimitWeight * shoulderRad * shoulderRad +
              g.options->torsoWeight * torsoDeficit * torsoDeficit +
              g.options->elbowHeightWeight * elbowRise * elbowRise;
-    if (g.hinted) {
-        const float fromHint = wrapPi(swivel - g.hintSwivel);
-        c.cost += g.options->hintWeight * fromHint * fromHint;
-    }
     return c;
 }
 
@@ -227,21 +217,12 @@ ArmPose solveArm(const ArmModel& arm, const ArmTarget& target, const ArmSolveOpt
 
     float swivel = 0.0f;
     bool windowed = false;
-    if (options.swivelHintDeg) {
-        const float previous = *options.swivelHintDeg * kDeg;
-        const float step = std::max(options.maxSwivelStepDeg, 0.5f) * kDeg;
-        g.hinted = true;
-        g.hintSwivel = previous;
-        swivel = searchSwivel(g, previous - step, previous + step, 1.0f * kDeg);
-        windowed = true;
-    } else if (options.previousElbowDirection) {
+    if (options.previousElbowDirection) {
         const glm::vec3 prev = *options.previousElbowDirection;
         const glm::vec3 inPlane = prev - glm::dot(prev, g.axis) * g.axis;
         if (glm::length(inPlane) > 1e-3f) {
             const float previous = std::atan2(glm::dot(inPlane, g.ref1), glm::dot(inPlane, g.ref0));
             const float step = std::max(options.maxSwivelStepDeg, 0.5f) * kDeg;
-            g.hinted = true;
-            g.hintSwivel = previous;
             swivel = searchSwivel(g, previous - step, previous + step, 1.0f * kDeg);
             windowed = true;
         }

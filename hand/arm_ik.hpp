@@ -90,23 +90,7 @@ struct ArmSolveOptions {
     // the swivel moves at most maxSwivelStepDeg from it, so the elbow never flips between
     // neighbouring frames.
     std::optional<glm::vec3> previousElbowDirection;
-    // The same as a swivel angle (ArmPose::swivelDeg, about the shoulder-wrist axis from the
-    // natural pole); used instead of previousElbowDirection when set. Unlike a direction, an
-    // angle blended between two keys never passes near the shoulder-wrist axis, where the
-    // direction's projection (and so the elbow) turns fast (issue 21).
-    std::optional<float> swivelHintDeg;
     float maxSwivelStepDeg = 20.0f;
-    // Pull of the swivel toward previousElbowDirection (per radian², on the cost below); 0:
-    // none, the window alone. Strong (~1000, the signer's transitions between signs), the cost
-    // is convex within the window, so the swivel is its one minimum and moves continuously
-    // with the target and the hint (issue 21: no jump where two basins swap).
-    float hintWeight = 0.0f;
-    // The wrist's angles to hold (clamped to the limits) instead of reaching for the target's
-    // hand orientation: a clip blends them between its keys' solutions (joint-space
-    // interpolation, the way a body turns its hand from one orientation to the next), so that
-    // between two keys within the wrist's range the hand never passes through orientations
-    // beyond it, where the nearest reachable hand jumps (issue 21). Absent: from the target.
-    std::optional<glm::vec3> wristAnglesDeg;  // supination, flexion, ulnar deviation
     // Without a previous elbow: the swivel is sought only within this angle of the natural
     // pole [D]. The rule of the target that picks the elbow (issue 21: a pose is a function of
     // its instant, never of the last frame): the elbow stays on the low, outer side of the

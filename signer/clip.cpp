@@ -23,38 +23,6 @@ glm::vec3 blendElbowHints(const glm::vec3& a, const glm::vec3& b, float t) {
     return glm::length(v) > 1e-4f ? glm::normalize(v) : (t < 0.5f ? a : b);
 }
 
-ArmKey solveArmKey(const hand::ArmModel& arm, const hand::ArmTarget& target) {
-    const glm::vec3 elbow = hand::solveArm(arm, target).elbowDirection;
-    hand::ArmSolveOptions options;  // as SignerRig::solveArm poses a hinted posture
-    options.previousElbowDirection = elbow;
-    options.maxSwivelStepDeg = kElbowHintWindowDeg;
-    const hand::ArmPose settled = hand::solveArm(arm, target, options);
-    return {elbow, settled.elbowDirection, settled.swivelDeg,
-            {settled.supinationDeg, settled.wristFlexionDeg, settled.wristUlnarDeviationDeg}};
-}
-
-ArmKey blendArmKeys(const ArmKey& a, const ArmKey& b, float t) {
-    if (t <= 0.0f) return a;
-    if (t >= 1.0f) return b;
-    return {blendElbowHints(a.elbow, b.elbow, t), blendElbowHints(a.settledElbow, b.settledElbow, t),
-            a.settledSwivelDeg + t * (b.settledSwivelDeg - a.settledSwivelDeg),
-            a.wristAnglesDeg + t * (b.wristAnglesDeg - a.wristAnglesDeg)};
-}
-
-void setArmHints(SignerPosture& posture, hand::Side side, const ArmKey& key, bool jointSpace) {
-    const bool right = side == hand::Side::Right;
-    (right ? posture.rightElbowHint : posture.leftElbowHint) = jointSpace ? key.settledElbow : key.elbow;
-    std::optional<float>& swivel = right ? posture.rightSwivelHintDeg : posture.leftSwivelHintDeg;
-    std::optional<glm::vec3>& angles = right ? posture.rightWristAnglesDeg : posture.leftWristAnglesDeg;
-    if (jointSpace) {
-        swivel = key.settledSwivelDeg;
-        angles = key.wristAnglesDeg;
-    } else {
-        swivel.reset();
-        angles.reset();
-    }
-}
-
 hand::ArmTarget blendTargets(const hand::ArmTarget& a, const hand::ArmTarget& b, float t) {
     // Exactly the ends at 0 and 1 (slerp's rounding would make a posture at rest differ in
     // its last bits with the other end, and so the versions of a verb at their common rest).

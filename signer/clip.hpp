@@ -44,28 +44,6 @@ hand::HandControls relaxedHand();
 // Elbow hints (SignerPosture::rightElbowHint) blended, t in [0, 1]: the normalised linear blend.
 glm::vec3 blendElbowHints(const glm::vec3& a, const glm::vec3& b, float t);
 
-// The arm the solver finds for a key's target, by its rule of the target alone: the elbow
-// (SignerPosture::rightElbowHint) and the wrist's angles (rightWristAnglesDeg). A clip blends
-// them between its keys (issue 21: the arm moves in the joints' space, smoothly).
-struct ArmKey {
-    glm::vec3 elbow{0.0f, -1.0f, 0.0f};  // by the rule of the target alone
-    // The arm the key settles to (the solver's window around `elbow`, free of any pull): its
-    // elbow, the hint blended between keys, and its wrist's angles (supination, flexion, ulnar
-    // deviation), what a transition between two items blends.
-    glm::vec3 settledElbow{0.0f, -1.0f, 0.0f};
-    float settledSwivelDeg = 0.0f;  // the same as a swivel angle (hand::ArmPose::swivelDeg)
-    glm::vec3 wristAnglesDeg{0.0f};
-};
-ArmKey solveArmKey(const hand::ArmModel& arm, const hand::ArmTarget& target);
-// Blended, t in [0, 1]: the elbows as blendElbowHints, the angles linearly.
-ArmKey blendArmKeys(const ArmKey& a, const ArmKey& b, float t);
-// Sets the posture's hints of `side` from `key`. Within a sign (`jointSpace` false) the elbow
-// by the rule of the target, searched around, and the wrist reaching for the target's
-// orientation, as the lexicon's contact signs were written. In a transition between items the
-// settled swivel (pulled to, hand::ArmSolveOptions::hintWeight) and the wrist's angles, so the
-// arm moves in the joints' space from one sign's arm to the next (issue 21).
-void setArmHints(SignerPosture& posture, hand::Side side, const ArmKey& key, bool jointSpace);
-
 // Arm targets blended: position linearly, rotation by the shortest slerp; t in [0, 1].
 hand::ArmTarget blendTargets(const hand::ArmTarget& a, const hand::ArmTarget& b, float t);
 

@@ -403,10 +403,6 @@ hand::ArmPose SignerRig::solveArm(hand::Side side, const SignerPosture& posture)
     hand::ArmSolveOptions options;
     options.previousElbowDirection = right ? posture.rightElbowHint : posture.leftElbowHint;
     options.maxSwivelStepDeg = kElbowHintWindowDeg;
-    options.wristAnglesDeg = right ? posture.rightWristAnglesDeg : posture.leftWristAnglesDeg;
-    options.swivelHintDeg = right ? posture.rightSwivelHintDeg : posture.leftSwivelHintDeg;
-    // Pulled to the hint where the posture gives the swivel (a transition between items).
-    options.hintWeight = options.swivelHintDeg ? kElbowHintWeight : 0.0f;
     return hand::solveArm(raisedArm(side, posture.nonManual), target, options);
 }
 

@@ -139,23 +139,11 @@ struct SignerPosture {
     // kElbowHintWindowDeg of it, so the elbow moves smoothly between keys however the cost's
     // basins shift. Absent: the solver's rule of the target alone.
     std::optional<glm::vec3> rightElbowHint, leftElbowHint;
-    // The wrist's angles (hand::ArmSolveOptions::wristAnglesDeg: supination, flexion, ulnar
-    // deviation), blended from the keys' solutions as the elbow hints are: the hand turns in
-    // the joints' space between keys. Absent: the wrist reaches for the target's orientation.
-    std::optional<glm::vec3> rightWristAnglesDeg, leftWristAnglesDeg;
-    // The elbow hint as a swivel angle (hand::ArmSolveOptions::swivelHintDeg), blended from
-    // the keys' settled swivels; the solver uses it instead of the direction when present.
-    std::optional<float> rightSwivelHintDeg, leftSwivelHintDeg;
     NonManualPosture nonManual;  // face, head, torso and shoulders
 };
 
 // [D] How far from a posture's elbow hint the arm solver may swing the elbow.
 inline constexpr float kElbowHintWindowDeg = 20.0f;
-// [D] How strongly the swivel is pulled to its hint (hand::ArmSolveOptions::hintWeight, per
-// rad²): against the pole, torso, shoulder and wrist terms (slopes up to a few hundred per rad
-// where active) it keeps the elbow within a few degrees of the keys' settled blend, and the
-// cost convex in the window, so the elbow moves continuously (issue 21).
-inline constexpr float kElbowHintWeight = 1000.0f;
 
 struct PoseReport {
     hand::ArmPose right, left;

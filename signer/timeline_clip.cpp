@@ -129,13 +129,8 @@ TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline) : r
         const bool right = side == hand::Side::Right;
         for (const stimuli::TimelineKey& key : right ? timeline_.right : timeline_.left) {
             const hand::ArmTarget target = key.rest ? rig_->restingTarget(side) : armTargetFromSigningSpace(key.pose);
-            (right ? rightArms_ : leftArms_).push_back(solveArmKey(rig_->arm(side), target));
+            (right ? rightElbows_ : leftElbows_).push_back(hand::solveArm(rig_->arm(side), target).elbowDirection);
         }
-        const std::vector<stimuli::TimelineKey>& track = right ? timeline_.right : timeline_.left;
-        std::vector<bool>& transition = right ? rightToNextIsTransition_ : leftToNextIsTransition_;
-        for (std::size_t k = 0; k < track.size(); ++k)
-            transition.push_back(k + 1 < track.size() && track[k + 1].timeSeconds > track[k].timeSeconds &&
-                                 !insideItem(track[k].timeSeconds, track[k + 1].timeSeconds));
     }
     // The head's turns, one after another (a minimum-jerk turn of angle A over T peaks at
     // 1.875·A/T).
@@ -538,17 +533,17 @@ SignerPosture TimelineClip::straightPostureAt(double seconds, bool settled) cons
             if (a != glm::vec3(0.0f) || b != glm::vec3(0.0f)) target.wristMm += a + blend * (b - a);
         }
         const hand::HandControls controls = hand::interpolate(from.controls, to.controls, blend);
-        const std::vector<ArmKey>& arms = side == hand::Side::Right ? rightArms_ : leftArms_;
-        const auto fromKey = static_cast<std::size_t>(sample.from - track.data());
-        const auto toKey = static_cast<std::size_t>(sample.to - track.data());
-        const bool transition = toKey == fromKey + 1 && (side == hand::Side::Right ? rightToNextIsTransition_ : leftToNextIsTransition_)[fromKey];
-        setArmHints(posture, side, blendArmKeys(arms[fromKey], arms[toKey], blend), transition);
+        const std::vector<glm::vec3>& elbows = side == hand::Side::Right ? rightElbows_ : leftElbows_;
+        const glm::vec3 elbow = blendElbowHints(elbows[static_cast<std::size_t>(sample.from - track.data())],
+                                                elbows[static_cast<std::size_t>(sample.to - track.data())], blend);
         if (side == hand::Side::Right) {
             posture.rightWrist = target;
             posture.rightHand = controls;
+            posture.rightElbowHint = elbow;
         } else {
             posture.leftWrist = target;
             posture.leftHand = controls;
+            posture.leftElbowHint = elbow;
         }
     }
     posture.nonManual = nonManualAt(timeline_, seconds);

@@ -84,10 +84,8 @@ private:
     const SignerRig* rig_;
     stimuli::Timeline timeline_;
     std::vector<Detour> detours_;  // in time order
-    std::vector<ArmKey> rightArms_, leftArms_;  // per key of each track: the solver's arm there
-    // Per key of each track: whether the way to the next key is a transition between items.
-    std::vector<bool> rightToNextIsTransition_, leftToNextIsTransition_;
-    std::vector<glm::vec3> rightTouch_, leftTouch_;  // per key of each track: its wrist's settling offset (body frame, mm)
+    std::vector<glm::vec3> rightElbows_, leftElbows_;  // per key of each track: the solver's elbow there
+    std::vector<glm::vec3> rightTouch_, leftTouch_;    // per key of each track: its wrist's settling offset (body frame, mm)
     // An item whose touch is settled: the wrists' offsets at its instants (body frame, mm).
     struct TouchSpan {
         double startSeconds = 0.0, endSeconds = 0.0;

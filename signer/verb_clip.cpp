@@ -24,11 +24,11 @@ VerbClip::VerbClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes
         for (const stimuli::PerformanceKeyframe& key : track.keyframes) shapes.at(key.handshape);
     for (const stimuli::HandTrack& track : performance_.hands) {
         const hand::Side side = toHandSide(track.side);
-        restArms_.push_back(solveArmKey(rig.arm(side), rig.restingTarget(side)));
-        std::vector<ArmKey> arms;
+        restElbows_.push_back(hand::solveArm(rig.arm(side), rig.restingTarget(side)).elbowDirection);
+        std::vector<glm::vec3> elbows;
         for (const stimuli::PerformanceKeyframe& key : track.keyframes)
-            arms.push_back(solveArmKey(rig.arm(side), armTargetFromSigningSpace(key.pose)));
-        keyArms_.push_back(std::move(arms));
+            elbows.push_back(hand::solveArm(rig.arm(side), armTargetFromSigningSpace(key.pose)).elbowDirection);
+        keyElbows_.push_back(std::move(elbows));
     }
 }
 
@@ -49,29 +49,30 @@ SignerPosture VerbClip::postureAt(double seconds) const {
         const stimuli::HandSample sample = stimuli::sampleHand(track, std::max(0.0, verbTime));
         // The elbow hint: blended between the keyframes' elbows as sampleHand blends the poses.
         const std::vector<stimuli::PerformanceKeyframe>& keys = track.keyframes;
-        const std::vector<ArmKey>& arms = keyArms_[h];
-        ArmKey arm = arms.empty() ? restArms_[h] : arms.front();
+        const std::vector<glm::vec3>& elbows = keyElbows_[h];
+        glm::vec3 elbow = elbows.empty() ? restElbows_[h] : elbows.front();
         if (keys.size() > 1 && verbTime >= keys.back().timeSeconds) {
-            arm = arms.back();
+            elbow = elbows.back();
         } else if (keys.size() > 1 && verbTime > keys.front().timeSeconds) {
             std::size_t i = 1;
             while (keys[i].timeSeconds < verbTime) ++i;
             const double u = (verbTime - keys[i - 1].timeSeconds) / (keys[i].timeSeconds - keys[i - 1].timeSeconds);
-            arm = blendArmKeys(arms[i - 1], arms[i], static_cast<float>(smoothstep(u)));
+            elbow = blendElbowHints(elbows[i - 1], elbows[i], static_cast<float>(smoothstep(u)));
         }
-        if (rise < 1.0f) arm = blendArmKeys(restArms_[h], arm, rise);
+        if (rise < 1.0f) elbow = blendElbowHints(restElbows_[h], elbow, rise);
         hand::HandControls controls =
             hand::interpolate(shapes_->at(sample.handshapeFrom).controls, shapes_->at(sample.handshapeTo).controls,
                               static_cast<float>(sample.handshapeBlend));
-        setArmHints(posture, side, arm, false);
         hand::ArmTarget target = armTargetFromSigningSpace(sample.pose);
         if (rise < 1.0f) target = blendTargets(rig_->restingTarget(side), target, rise);
         if (side == hand::Side::Right) {
             posture.rightHand = controls;
             posture.rightWrist = target;
+            posture.rightElbowHint = elbow;
         } else {
             posture.leftHand = controls;
             posture.leftWrist = target;
+            posture.leftElbowHint = elbow;
         }
     }
     return posture;

@@ -36,8 +36,8 @@ private:
     stimuli::VerbPerformance performance_;
     ClipTiming timing_;
     // Per hand track: the solver's elbow at rest and at each keyframe (SignerPosture's hints).
-    std::vector<ArmKey> restArms_;
-    std::vector<std::vector<ArmKey>> keyArms_;
+    std::vector<glm::vec3> restElbows_;
+    std::vector<std::vector<glm::vec3>> keyElbows_;
 };
 
 }  // namespace signstim::signer

@@ -93,11 +93,7 @@ inline void measureClip(const signer::SignerRig& rig, const signer::Clip& clip, 
                 peaks.elbowSwingDegPerFrame.take(angleDeg(a.elbowMm - a.shoulderMm, p.elbowMm - p.shoulderMm) * fps / 60.0, where);
                 const auto& hint = right ? posture.rightElbowHint : posture.leftElbowHint;
                 const auto& hintBefore = right ? previousPosture.rightElbowHint : previousPosture.leftElbowHint;
-                const auto& swivelHint = right ? posture.rightSwivelHintDeg : posture.leftSwivelHintDeg;
-                const auto& swivelHintBefore = right ? previousPosture.rightSwivelHintDeg : previousPosture.leftSwivelHintDeg;
-                const double hintStep = swivelHint && swivelHintBefore ? std::fabs(*swivelHint - *swivelHintBefore)
-                                        : hint && hintBefore       ? angleDeg(*hint, *hintBefore)
-                                                                   : 0.0;
+                const double hintStep = hint && hintBefore ? angleDeg(*hint, *hintBefore) : 0.0;
                 peaks.hintStepDegPerFrame.take(hintStep * fps / 60.0, where);
                 peaks.swivelStepDegPerFrame.take((angleDeg(a.elbowDirection, p.elbowDirection) - hintStep) * fps / 60.0, where);
                 peaks.wristSpeedMmPerSecond.take(glm::distance(a.wristMm, p.wristMm) * fps, where);
