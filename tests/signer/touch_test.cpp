@@ -18,7 +18,9 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -98,6 +100,42 @@ glm::vec3 keyedRightWrist(const stimuli::Timeline& timeline, double t) {
         .wristMm;
 }
 
+// Whether a sign touches the other arm (a contact event at an `arm:` place, docs/lexicon.md:
+// SON and DAUGHTER's elbow crook, TABLE's forearm): its touch is measured on the arm too.
+bool touchesTheArm(const stimuli::LexiconSign& sign) {
+    for (const stimuli::ContactEvent& e : sign.contactEvents)
+        if (e.at.rfind("arm:", 0) == 0) return true;
+    return false;
+}
+
+// The left arm as posed, as capsules: the default avatar's sleeve (signer/avatar_builder.cpp,
+// radiusAt: 38 mm at the elbow, 40 mm at 30 % of the forearm, 29 mm at the wrist), its upper
+// arm near the elbow and its forearm, each no thicker than the sleeve there (a touch measured
+// on them is not deeper than it is).
+void leftArmCapsules(const hand::ArmPose& arm, std::vector<hand::Capsule>& out) {
+    const glm::vec3 thick = arm.elbowMm + 0.3f * (arm.wristMm - arm.elbowMm);
+    out.push_back({arm.elbowMm + 0.3f * (arm.shoulderMm - arm.elbowMm), arm.elbowMm, 38.0f});
+    out.push_back({arm.elbowMm, thick, 38.0f});
+    out.push_back({thick, arm.wristMm, 29.0f});
+}
+
+// The closest approach of the right hand to the left hand and arm inside the sign's items that
+// touch with both hands, every frame of `frames` (mm).
+float handToArmGap(const signer::TimelineClip& clip, const std::vector<signer::ClearanceFrame>& frames) {
+    const signer::ClipPoser poser(world().signer.rig(), clip);
+    float gap = std::numeric_limits<float>::infinity();
+    for (const signer::ClearanceFrame& f : frames) {
+        if (f.span < 0 || !clip.timeline().spans[static_cast<std::size_t>(f.span)].contact.hands) continue;
+        signer::SignerPosture posture;
+        signer::PoseReport report;
+        poser.next(f.seconds, &posture, &report);
+        signer::SignerCapsules capsules = signer::signerCapsules(world().signer.rig(), posture, report);
+        leftArmCapsules(report.left, capsules.left);
+        gap = std::min(gap, signer::closestApproach(capsules.right, capsules.left).gapMm);
+    }
+    return gap;
+}
+
 }  // namespace
 
 TEST(Touch, HandsThatTouchMeetAtTheSurfaceAndTheBaseHandHolds) {
@@ -147,16 +185,27 @@ struct KnownSign {
     const char* sign;
     float gapMm;
 };
-const KnownSign kSinksIn[] = {{"LOSE", -13.0f}, {"MORE", -14.0f}};
+// HOW, AGAIN: the rig cannot turn the hands as the notation asks (the wrist's and forearm's
+// limits leave them 30-35 degrees off), so hands the notation's check finds touching at a
+// point pass 17-21 mm through each other, and settling finds no way out within a palm's width
+// along one line (data: orientations the arms reach, as FAMILY's palms now turn a little
+// toward each other; HOW's finger backs face up, not each other).
+const KnownSign kSinksIn[] = {{"LOSE", -13.0f}, {"MORE", -14.0f}, {"HOW", -21.5f}, {"AGAIN", -17.5f}};
 // Signs that say they touch with both hands and never come within 10 mm (issue 22: four signs
 // declare contact they never make): NICE's hands stay 15 mm apart, MORNING's 89 mm, WHEN's
 // 127 mm (data: the contact, or the places).
-const KnownSign kNeverReach[] = {{"NICE", 15.5f}, {"MORNING", 89.5f}, {"WHEN", 127.5f}};
+// SON, DAUGHTER, BABY, TABLE (measured on the left arm, touchesTheArm): the right hand is
+// turned 40-85 degrees from the notation's orientation at its wrist's limits, and the
+// notation's arm is a straight forearm along the base hand's axis, not the arm the rig poses
+// (data: orientations the arms reach, places on the posed arm).
+const KnownSign kNeverReach[] = {{"NICE", 15.5f},     {"MORNING", 89.5f}, {"WHEN", 127.5f}, {"SON", 38.0f},
+                                 {"DAUGHTER", 33.5f}, {"BABY", 17.0f},    {"TABLE", 26.5f}};
 
 TEST(Touch, EveryLexiconSignThatTouchesWithBothHandsComesToTheSurfaceAlone) {
     // Each sign alone in citation form, as `signstim sign GLOSS` signs it (rests of 0.3 s,
     // rate 1), every frame at 30 fps and at its keys' ends: the touch goes no deeper than
-    // kContactDepthToleranceMm, and reaches the other hand within 10 mm (issue 22).
+    // kContactDepthToleranceMm, and reaches the other hand within 10 mm (issue 22) — or the
+    // other arm, for a sign whose contact is on the arm.
     const World& w = world();
     const signer::SignerRig& rig = w.signer.rig();
     std::string deep, apart;
@@ -176,7 +225,9 @@ TEST(Touch, EveryLexiconSignThatTouchesWithBothHandsComesToTheSurfaceAlone) {
         timing.signScale = 1.0;
         timing.restSeconds = 0.3;
         const signer::TimelineClip clip(rig, stimuli::buildTimeline(story, stimuli::VerbVersion::Point, w.sources(), timing));
-        const float gap = signer::checkClearance(clip.timeline(), signer::clearanceFrames(rig, clip)).handsInContactSigns.gapMm;
+        const std::vector<signer::ClearanceFrame> frames = signer::clearanceFrames(rig, clip);
+        const float gap = touchesTheArm(sign) ? handToArmGap(clip, frames)
+                                              : signer::checkClearance(clip.timeline(), frames).handsInContactSigns.gapMm;
         ++checked;
         const auto known = [&](const auto& list) {
             for (const KnownSign& k : list)
