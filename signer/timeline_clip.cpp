@@ -390,13 +390,13 @@ void TimelineClip::settleTouches() {
         // the wrists' separation there, and the body's six axes.
         std::vector<SignerPosture> straight;
         for (const double t : times) straight.push_back(straightPostureAt(t, false));
-        const auto gapOf = [&](SignerPosture posture, const glm::vec3& direction, float way) {
+        const auto gapWith = [&](std::size_t i, const glm::vec3& direction, float way) {
+            SignerPosture posture = straight[i];
             posture.rightWrist->wristMm += rightShare * way * direction;
             posture.leftWrist->wristMm -= (1.0f - rightShare) * way * direction;
             const SignerCapsules capsules = signerCapsules(*rig_, posture, arms(posture));
             return closestApproach(capsules.right, capsules.left).gapMm;
         };
-        const auto gapWith = [&](std::size_t i, const glm::vec3& direction, float way) { return gapOf(straight[i], direction, way); };
         std::vector<float> gaps;
         std::size_t deepest = 0;
         for (std::size_t i = 0; i < times.size(); ++i) {
@@ -410,24 +410,23 @@ void TimelineClip::settleTouches() {
         struct Way {
             float mm = 0.0f, gapMm = 0.0f;
         };
-        const auto wayFrom = [&](const SignerPosture& posture, float gapMm, const glm::vec3& direction) {
-            if (gapMm >= -kTouchDepthMm - kSettledMm) return Way{0.0f, gapMm};
-            Way shallowest{0.0f, gapMm};
+        const auto wayOut = [&](std::size_t i, const glm::vec3& direction) {
+            if (gaps[i] >= -kTouchDepthMm - kSettledMm) return Way{0.0f, gaps[i]};
+            Way shallowest{0.0f, gaps[i]};
             float inside = 0.0f, outside = kStepMm;
             for (;; outside += kStepMm) {
                 if (outside > kMostMm) return shallowest;
-                const float gap = gapOf(posture, direction, outside);
+                const float gap = gapWith(i, direction, outside);
                 if (gap >= -kTouchDepthMm) break;
                 if (gap > shallowest.gapMm) shallowest = {outside, gap};
                 inside = outside;
             }
             for (int k = 0; k < kHalvings; ++k) {
                 const float middle = 0.5f * (inside + outside);
-                (gapOf(posture, direction, middle) < -kTouchDepthMm ? inside : outside) = middle;
+                (gapWith(i, direction, middle) < -kTouchDepthMm ? inside : outside) = middle;
             }
             return Way{outside, -kTouchDepthMm};
         };
-        const auto wayOut = [&](std::size_t i, const glm::vec3& direction) { return wayFrom(straight[i], gaps[i], direction); };
         const SignerPosture& at = straight[deepest];
         const SignerCapsules capsules = signerCapsules(*rig_, at, arms(at));
         const Approach closest = closestApproach(capsules.right, capsules.left);
@@ -480,50 +479,6 @@ void TimelineClip::settleTouches() {
         for (const std::size_t k : right) rightTouch_[k] = settled.at(timeline_.right[k].timeSeconds, true);
         for (const std::size_t k : left) leftTouch_[k] = settled.at(timeline_.left[k].timeSeconds, false);
         touchSpans_.push_back(std::move(settled));
-        // The transitions out of the stretch and into it (issue 21): there the keys' offsets
-        // blend with the keys, but the hands turn and change shape from the first instant, so a
-        // hand leaving or reaching the touch can sink deeper into the other than the touch goes
-        // (story-08's MEET -> IX: the index hands part while the left opens to rest, 6.3 mm
-        // deep 33 ms after the touch). Where an instant of a transition is deeper than the
-        // touch, the wrists move further out along the stretch's direction, by a way that grows
-        // and shrinks no faster than kTouchRateMmPerSecond and is nothing at both its ends.
-        for (const bool after : {true, false}) {
-            std::optional<double> beside;  // the transition's far end: the nearest key outside
-            for (const std::vector<stimuli::TimelineKey>* track : {&timeline_.right, &timeline_.left})
-                for (const stimuli::TimelineKey& k : *track)
-                    if (after ? k.timeSeconds > span.endSeconds + 1e-9 && (!beside || k.timeSeconds < *beside)
-                              : k.timeSeconds < span.startSeconds - 1e-9 && (!beside || k.timeSeconds > *beside))
-                        beside = k.timeSeconds;
-            if (!beside) continue;
-            TouchSpan leaving;
-            leaving.startSeconds = after ? span.endSeconds : *beside;
-            leaving.endSeconds = after ? *beside : span.startSeconds;
-            leaving.times.push_back(leaving.startSeconds);
-            for (auto f = static_cast<std::uint64_t>(std::floor(leaving.startSeconds * kTouchFramesPerSecond)) + 1;
-                 static_cast<double>(f) / kTouchFramesPerSecond < leaving.endSeconds - 1e-9; ++f)
-                leaving.times.push_back(static_cast<double>(f) / kTouchFramesPerSecond);
-            leaving.times.push_back(leaving.endSeconds);
-            std::vector<float> ways(leaving.times.size(), 0.0f);
-            bool any = false;
-            for (std::size_t i = 1; i + 1 < leaving.times.size(); ++i) {
-                const SignerPosture posture = straightPostureAt(leaving.times[i]);
-                const SignerCapsules capsules = signerCapsules(*rig_, posture, arms(posture));
-                ways[i] = wayFrom(posture, closestApproach(capsules.right, capsules.left).gapMm, chosen).mm;
-                any = any || ways[i] > 0.0f;
-            }
-            if (!any) continue;
-            for (std::size_t i = 0; i < ways.size(); ++i) {
-                const double t = leaving.times[i];
-                float way = 0.0f;
-                for (std::size_t j = 0; j < ways.size(); ++j)
-                    way = std::max(way, ways[j] - static_cast<float>(kTouchRateMmPerSecond * std::abs(t - leaving.times[j])));
-                const double fromEnds = std::min(t - leaving.startSeconds, leaving.endSeconds - t);
-                way = std::min(way, static_cast<float>(kTouchRateMmPerSecond * fromEnds));
-                leaving.right.push_back(rightShare * way * chosen);
-                leaving.left.push_back(-(1.0f - rightShare) * way * chosen);
-            }
-            transitionTouches_.push_back(std::move(leaving));
-        }
     }
 }
 
@@ -576,9 +531,6 @@ SignerPosture TimelineClip::straightPostureAt(double seconds, bool settled) cons
             const glm::vec3 a = touch[static_cast<std::size_t>(sample.from - track.data())];
             const glm::vec3 b = touch[static_cast<std::size_t>(sample.to - track.data())];
             if (a != glm::vec3(0.0f) || b != glm::vec3(0.0f)) target.wristMm += a + blend * (b - a);
-            // A transition out of or into a settled touch, moved further out where it sinks deeper.
-            for (const TouchSpan& span : transitionTouches_)
-                if (seconds > span.startSeconds && seconds < span.endSeconds) target.wristMm += span.at(seconds, side == hand::Side::Right);
         }
         const hand::HandControls controls = hand::interpolate(from.controls, to.controls, blend);
         const std::vector<glm::vec3>& elbows = side == hand::Side::Right ? rightElbows_ : leftElbows_;

@@ -34,10 +34,8 @@
 // moves in the item (both, half each, when both or neither do) is moved out along the line
 // between the closest points until they meet at that depth. The offsets depend on the
 // timeline alone (the pose stays a function of it and t); the transitions blend them in and
-// out with the keys, and where a hand leaving or reaching the touch would sink deeper into
-// the other than the touch goes (turning, changing shape), the wrists move further out there,
-// along the same line, at the same rate; an instant that touches still touches, one clear of
-// the other hand is left alone.
+// out with the keys; an instant that touches still touches, one clear of the other hand is
+// left alone.
 #include "signer/clip.hpp"
 #include "stimuli/story/timeline.hpp"
 #include "stimuli/story/timeline_builder.hpp"
@@ -96,9 +94,6 @@ private:
         glm::vec3 at(double seconds, bool rightHand) const;  // linear between the instants
     };
     std::vector<TouchSpan> touchSpans_;  // in time order
-    // The transitions out of and into settled touches, with the wrists' further offsets where
-    // they would sink deeper than the touch (settleTouches).
-    std::vector<TouchSpan> transitionTouches_;
     glm::vec2 headStartDeg_{0.0f};
     std::vector<HeadMove> headMoves_;  // in time order, one after the other
 };
