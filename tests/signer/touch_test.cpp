@@ -190,7 +190,9 @@ struct KnownSign {
 // point pass 17-21 mm through each other, and settling finds no way out within a palm's width
 // along one line (data: orientations the arms reach, as FAMILY's palms now turn a little
 // toward each other; HOW's finger backs face up, not each other).
-const KnownSign kSinksIn[] = {{"LOSE", -13.0f}, {"MORE", -14.0f}, {"HOW", -21.5f}, {"AGAIN", -17.5f}};
+// MARRY (both hands moving to meet, the base hand on its own path since 2026-11-26): settled to
+// -15.2 mm only; why the settling stops there is not yet examined.
+const KnownSign kSinksIn[] = {{"LOSE", -13.0f}, {"MORE", -14.0f}, {"HOW", -21.5f}, {"AGAIN", -17.5f}, {"MARRY", -15.5f}};
 // Signs that say they touch with both hands and never come within 10 mm (issue 22: four signs
 // declare contact they never make): NICE's hands stay 15 mm apart, MORNING's 89 mm, WHEN's
 // 127 mm (data: the contact, or the places).
