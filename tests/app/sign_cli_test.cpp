@@ -29,7 +29,16 @@ TEST(SignCli, PrintsTheClaimedCodeTheEntryAndEveryCheck) {
     EXPECT_NE(r.output.find("ok   contact 2 thumb-tip at chin"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("ok   repetitions: 2"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("FAIL"), std::string::npos) << r.output;
-    const auto keyframes = runSignstim("sign BOOK --scenes " + shellQuote(kScenes));
+    // Every default sign is in the notation (issue 22); a lab's own sign may still be keyframes
+    // (synthetic: one still key).
+    const fs::path dir = freshDir("keyframes");
+    std::ofstream(dir / "lab.json") << R"({"format": "signstim-lexicon", "version": 1, "signs": [
+  {"gloss": "STILL-L", "meaning": "synthetic: an L hand held in front of the chest", "hands": ["right"],
+   "keyframes": {"right": [{"time": 0, "position": [60, 0, 250], "fingers": [0, 1, 0], "palm": [0, 0, 1], "handshape": "L"},
+                           {"time": 0.3, "position": [60, 0, 250], "fingers": [0, 1, 0], "palm": [0, 0, 1], "handshape": "L"}]}}]}
+)";
+    const auto keyframes =
+        runSignstim("sign STILL-L --scenes " + shellQuote(kScenes) + " --lexicon " + shellQuote((dir / "lab.json").string()));
     ASSERT_EQ(keyframes.status, 0) << keyframes.output;
     EXPECT_NE(keyframes.output.find("written as keyframes"), std::string::npos) << keyframes.output;
     const auto unknown = runSignstim("sign NOSUCHSIGN --scenes " + shellQuote(kScenes));
