@@ -3,6 +3,7 @@
 // relation per part (compounds like STUDENT). Lexicons written here are synthetic.
 #include "stimuli/story/sign_notation_check.hpp"
 #include "stimuli/story/timeline.hpp"
+#include "tests/stimuli/notation_fixture.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,30 +12,10 @@
 namespace signstim::stimuli {
 namespace {
 
-const hand::HandModel& model() {
-    static const hand::HandModel m = hand::buildHandModel();
-    return m;
-}
-
-const HandshapeLibrary& shapes() {
-    static const HandshapeLibrary library = loadHandshapes(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/handshapes.json", model());
-    return library;
-}
-
-// A synthetic lexicon with one sign GLOSS whose "notation" is `notation` (JSON text).
-std::string lexiconWith(const std::string& notation) {
-    return "{\n"
-           "  \"format\": \"signstim-lexicon\",\n"
-           "  \"version\": 1,\n"
-           "  \"locations\": {\"chin\": [0, 248, 92], \"neutral\": [0, -60, 300], \"neutral-right\": [130, -40, 280]},\n"
-           "  \"signs\": [\n"
-           "    {\"gloss\": \"GLOSS\",\n"
-           "     \"notation\": " + notation + "}\n"
-           "  ]\n"
-           "}\n";
-}
-
-Lexicon parse(const std::string& text) { return parseLexicon(parseJsonText(text, "lexicon.json"), shapes(), model()); }
+using notation_fixture::model;
+using notation_fixture::shapes;
+using notation_fixture::lexiconWith;
+using notation_fixture::parse;
 
 std::vector<TimelineKey> track(const LexiconSign& sign, std::size_t h) {
     std::vector<TimelineKey> keys;

@@ -4,6 +4,7 @@
 // named at their file, line and field. Lexicons written here are synthetic.
 #include "stimuli/story/sign_notation_check.hpp"
 #include "stimuli/story/timeline.hpp"
+#include "tests/stimuli/notation_fixture.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,40 +14,11 @@
 namespace signstim::stimuli {
 namespace {
 
-const hand::HandModel& model() {
-    static const hand::HandModel m = hand::buildHandModel();
-    return m;
-}
-
-const HandshapeLibrary& shapes() {
-    static const HandshapeLibrary library = loadHandshapes(std::string(SIGNSTIM_SOURCE_DIR) + "/scenes/handshapes.json", model());
-    return library;
-}
-
-// A synthetic lexicon with one sign GLOSS whose "notation" is `notation` (JSON text).
-std::string lexiconWith(const std::string& notation) {
-    return "{\n"
-           "  \"format\": \"signstim-lexicon\",\n"
-           "  \"version\": 1,\n"
-           "  \"locations\": {\"chin\": [0, 248, 92], \"neutral\": [0, -60, 300], \"neutral-right\": [130, -40, 280]},\n"
-           "  \"signs\": [\n"
-           "    {\"gloss\": \"GLOSS\",\n"
-           "     \"notation\": " + notation + "}\n"
-           "  ]\n"
-           "}\n";
-}
-
-Lexicon parse(const std::string& text) { return parseLexicon(parseJsonText(text, "lexicon.json"), shapes(), model()); }
-
-InputError errorOf(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << "no error for:\n" << text;
-    return InputError("none");
-}
+using notation_fixture::model;
+using notation_fixture::shapes;
+using notation_fixture::lexiconWith;
+using notation_fixture::parse;
+using notation_fixture::errorOf;
 
 std::vector<TimelineKey> track(const LexiconSign& sign, std::size_t h) {
     std::vector<TimelineKey> keys;
