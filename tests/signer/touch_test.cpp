@@ -11,9 +11,9 @@
 #include "signer/timeline_clip.hpp"
 #include "stimuli/story/lexicon.hpp"
 #include "stimuli/story/story.hpp"
+#include "stimuli/story/story_world.hpp"
 #include "stimuli/story/timeline_builder.hpp"
 #include "stimuli/verbs/sora.hpp"
-#include "stimuli/verbs/verb_models.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -31,24 +31,11 @@ namespace {
 
 const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR) / "scenes";
 
-// What `signstim sign` signs from: the default signer, handshapes, verbs, models and lexicon.
+// What `signstim sign` signs from: the default signer, and the handshapes, verbs, models and
+// lexicon of scenes/ as every command loads them (stimuli::StoryWorld).
 struct World {
     signer::Signer signer{kScenes};
-    stimuli::HandshapeLibrary shapes = stimuli::loadHandshapes(kScenes / "handshapes.json", signer.rig().handModel());
-    stimuli::VerbLibrary verbs = stimuli::loadVerbLibrary(kScenes / "verbs.json");
-    stimuli::TrainedVerbModels models = stimuli::loadVerbModels(kScenes / "models" / "verb_models.json", verbs);
-    stimuli::Lexicon lexicon = stimuli::loadLexicon(kScenes / "lexicon", shapes, signer.rig().handModel());
-
-    stimuli::TimelineSources sources() const {
-        stimuli::TimelineSources s;
-        s.lexicon = &lexicon;
-        s.shapes = &shapes;
-        s.verbs = [this](const std::string& verb, stimuli::VerbVersion version, double subject, double object, int, int) {
-            return stimuli::synthesizeVerb(stimuli::VerbSources{&verbs, &models, kScenes / "animator", &shapes}, verb,
-                                           version, subject, object);
-        };
-        return s;
-    }
+    stimuli::StoryWorld story{kScenes.string(), ""};
 };
 const World& world() {
     static const World w;
@@ -61,7 +48,7 @@ stimuli::TimelineKey key(double t, const glm::dvec3& positionMm, const glm::dvec
     k.pose.positionMm = positionMm;
     k.pose.orientation = stimuli::orientationFromFingersPalm(fingers, palm);
     k.handshape = "B";
-    k.controls = world().shapes.at("B").controls;
+    k.controls = world().story.shapes.at("B").controls;
     return k;
 }
 
@@ -212,7 +199,7 @@ TEST(Touch, EveryLexiconSignThatTouchesWithBothHandsComesToTheSurfaceAlone) {
     const signer::SignerRig& rig = w.signer.rig();
     std::string deep, apart;
     int checked = 0;
-    for (const stimuli::LexiconSign& sign : w.lexicon.signs) {
+    for (const stimuli::LexiconSign& sign : w.story.lexicon.signs) {
         if (!sign.contact.hands) continue;
         stimuli::Story story;
         story.file = "sign " + sign.gloss;
@@ -226,7 +213,7 @@ TEST(Touch, EveryLexiconSignThatTouchesWithBothHandsComesToTheSurfaceAlone) {
         stimuli::TimelineOptions timing;
         timing.signScale = 1.0;
         timing.restSeconds = 0.3;
-        const signer::TimelineClip clip(rig, stimuli::buildTimeline(story, stimuli::VerbVersion::Point, w.sources(), timing));
+        const signer::TimelineClip clip(rig, stimuli::buildTimeline(story, stimuli::VerbVersion::Point, w.story.sources(story), timing));
         const std::vector<signer::ClearanceFrame> frames = signer::clearanceFrames(rig, clip);
         const float gap = touchesTheArm(sign) ? handToArmGap(clip, frames)
                                               : signer::checkClearance(clip.timeline(), frames).handsInContactSigns.gapMm;
