@@ -71,7 +71,9 @@ struct Geometry {
     float cosAlpha, sinAlpha;  // angle at the shoulder between the axis and the upper arm
 };
 
-Candidate evaluate(const Geometry& g, float swivel) {
+// `frames`: also the upper arm's frame, which the cost does not read (the swivel search asks
+// for the cost alone; the chosen swivel is evaluated again in full).
+Candidate evaluate(const Geometry& g, float swivel, bool frames = true) {
     const ArmModel& arm = *g.arm;
     Candidate c{};
     c.elbowDirection = std::cos(swivel) * g.ref0 + std::sin(swivel) * g.ref1;
@@ -85,7 +87,7 @@ Candidate evaluate(const Geometry& g, float swivel) {
     glm::vec3 forearmDir = g.wrist - c.elbowMm;
     const float forearmLen = glm::length(forearmDir);
     forearmDir = forearmLen > 1e-4f ? forearmDir / forearmLen : upperDir;
-    c.upperArm = frameFromAxes(palmar, upperDir);
+    if (frames) c.upperArm = frameFromAxes(palmar, upperDir);
     c.forearm = frameFromAxes(palmar, forearmDir);
 
     const glm::vec3 side = lateral(arm.side);
@@ -116,26 +118,53 @@ Candidate evaluate(const Geometry& g, float swivel) {
 
 // Grid then golden-section refinement of the swivel on [lo, hi] (radians).
 float searchSwivel(const Geometry& g, float lo, float hi, float gridStep) {
-    float best = lo, bestCost = evaluate(g, lo).cost;
+    float best = lo, bestCost = evaluate(g, lo, false).cost;
     const int steps = std::max(1, static_cast<int>(std::ceil((hi - lo) / gridStep)));
     for (int i = 1; i <= steps; ++i) {
         const float s = lo + (hi - lo) * static_cast<float>(i) / static_cast<float>(steps);
-        const float cost = evaluate(g, s).cost;
+        const float cost = evaluate(g, s, false).cost;
         if (cost < bestCost) { bestCost = cost; best = s; }
     }
     float a = std::max(lo, best - gridStep), b = std::min(hi, best + gridStep);
     const float ratio = 0.6180339887f;
     float x1 = b - ratio * (b - a), x2 = a + ratio * (b - a);
-    float f1 = evaluate(g, x1).cost, f2 = evaluate(g, x2).cost;
+    float f1 = evaluate(g, x1, false).cost, f2 = evaluate(g, x2, false).cost;
     for (int i = 0; i < 24; ++i) {
-        if (f1 < f2) { b = x2; x2 = x1; f2 = f1; x1 = b - ratio * (b - a); f1 = evaluate(g, x1).cost; }
-        else { a = x1; x1 = x2; f1 = f2; x2 = a + ratio * (b - a); f2 = evaluate(g, x2).cost; }
+        if (f1 < f2) { b = x2; x2 = x1; f2 = f1; x1 = b - ratio * (b - a); f1 = evaluate(g, x1, false).cost; }
+        else { a = x1; x1 = x2; f1 = f2; x2 = a + ratio * (b - a); f2 = evaluate(g, x2, false).cost; }
     }
     const float refined = 0.5f * (a + b);
-    return evaluate(g, refined).cost < bestCost ? refined : best;
+    return evaluate(g, refined, false).cost < bestCost ? refined : best;
+}
+
+// Where the wrist goes: the shoulder–wrist axis and distance, the target's clamped to what the
+// elbow's flexion limits allow. Independent of the swivel (solveArm and reachedWristMm share it).
+struct Reach {
+    glm::vec3 axis, wristMm;
+    float distanceMm;
+};
+
+Reach reachOf(const ArmModel& arm, const ArmTarget& target) {
+    const float a = arm.upperArmLengthMm, b = arm.forearmLengthMm;
+    if (!(a > 0.0f) || !(b > 0.0f)) throw std::invalid_argument("solveArm: segment lengths must be > 0");
+    // Reach: the shoulder–wrist distance d(flexion) = sqrt(a² + b² + 2ab·cos flexion).
+    const auto distanceAt = [&](float flexDeg) {
+        return std::sqrt(a * a + b * b + 2.0f * a * b * std::cos(flexDeg * kDeg));
+    };
+    const float dMax = distanceAt(arm.limits.elbowFlexion.minDeg);
+    const float dMin = distanceAt(arm.limits.elbowFlexion.maxDeg);
+    const glm::vec3 toTarget = target.wristMm - arm.shoulderMm;
+    const float dTarget = glm::length(toTarget);
+    Reach reach{};
+    reach.axis = dTarget > 1e-3f ? toTarget / dTarget : glm::vec3(0, -1, 0);
+    reach.distanceMm = clampf(dTarget, dMin, dMax);
+    reach.wristMm = arm.shoulderMm + reach.distanceMm * reach.axis;
+    return reach;
 }
 
 }  // namespace
+
+glm::vec3 reachedWristMm(const ArmModel& arm, const ArmTarget& target) { return reachOf(arm, target).wristMm; }
 
 ArmModel defaultArmModel(Side side) {
     ArmModel arm;
@@ -180,25 +209,16 @@ glm::quat handFrame(Side side, const glm::quat& forearm, const WristAngles& angl
 
 ArmPose solveArm(const ArmModel& arm, const ArmTarget& target, const ArmSolveOptions& options) {
     const float a = arm.upperArmLengthMm, b = arm.forearmLengthMm;
-    if (!(a > 0.0f) || !(b > 0.0f)) throw std::invalid_argument("solveArm: segment lengths must be > 0");
-
     Geometry g{};
     g.arm = &arm;
     g.target = &target;
     g.options = &options;
     g.shoulder = arm.shoulderMm;
 
-    // Reach: the shoulder–wrist distance d(flexion) = sqrt(a² + b² + 2ab·cos flexion).
-    const auto distanceAt = [&](float flexDeg) {
-        return std::sqrt(a * a + b * b + 2.0f * a * b * std::cos(flexDeg * kDeg));
-    };
-    const float dMax = distanceAt(arm.limits.elbowFlexion.minDeg);
-    const float dMin = distanceAt(arm.limits.elbowFlexion.maxDeg);
-    const glm::vec3 toTarget = target.wristMm - g.shoulder;
-    const float dTarget = glm::length(toTarget);
-    g.axis = dTarget > 1e-3f ? toTarget / dTarget : glm::vec3(0, -1, 0);
-    const float d = clampf(dTarget, dMin, dMax);
-    g.wrist = g.shoulder + d * g.axis;
+    const Reach reach = reachOf(arm, target);
+    g.axis = reach.axis;
+    const float d = reach.distanceMm;
+    g.wrist = reach.wristMm;
     g.cosAlpha = clampf((a * a + d * d - b * b) / (2.0f * a * d), -1.0f, 1.0f);
     g.sinAlpha = std::sqrt(std::max(0.0f, 1.0f - g.cosAlpha * g.cosAlpha));
 

@@ -141,6 +141,11 @@ struct ArmPose {
 // elbow when given); pronation and the wrist angles follow from the target orientation and
 // are clamped to their limits. Pure function; deterministic.
 ArmPose solveArm(const ArmModel& arm, const ArmTarget& target, const ArmSolveOptions& options = {});
+// Where solveArm puts the wrist (ArmPose::wristMm, the same bits) without seeking the elbow:
+// the target, or the nearest point toward it the elbow's flexion limits allow. It does not
+// depend on the swivel, so it costs a fraction of a solve (the transition pacer measures the
+// wrists' speed alone).
+glm::vec3 reachedWristMm(const ArmModel& arm, const ArmTarget& target);
 
 // Decomposes a hand frame relative to a forearm frame (both in the body frame) into
 // anatomical angles (degrees) for `side`: supination, flexion, ulnar deviation.

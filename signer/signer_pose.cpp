@@ -406,6 +406,12 @@ hand::ArmPose SignerRig::solveArm(hand::Side side, const SignerPosture& posture)
     return hand::solveArm(raisedArm(side, posture.nonManual), target, options);
 }
 
+glm::vec3 SignerRig::reachedWristMm(hand::Side side, const SignerPosture& posture) const {
+    const bool right = side == hand::Side::Right;
+    const hand::ArmTarget target = (right ? posture.rightWrist : posture.leftWrist).value_or(restingTarget(side));
+    return hand::reachedWristMm(raisedArm(side, posture.nonManual), target);
+}
+
 hand::GazePose SignerRig::solveGazeAt(const SignerPosture& posture) const {
     if (!posture.gazeMm) return hand::GazePose{};
     if (posture.headDeg) return hand::solveGazeWithHead(gaze_, *posture.gazeMm, posture.headDeg->x, posture.headDeg->y);

@@ -183,6 +183,9 @@ public:
     // One arm's solution as pose() finds it (ArmPose of PoseReport), without posing the
     // skeleton: cheap enough to look ahead along a clip.
     hand::ArmPose solveArm(hand::Side side, const SignerPosture& posture) const;
+    // Where solveArm puts the wrist (its wristMm, the same bits) without seeking the elbow
+    // (hand::reachedWristMm): for what needs the wrists alone, as the transition pacer.
+    glm::vec3 reachedWristMm(hand::Side side, const SignerPosture& posture) const;
     // The head and eyes as pose() turns them (straight ahead without a gaze point).
     hand::GazePose solveGazeAt(const SignerPosture& posture) const;
 

@@ -237,3 +237,24 @@ TEST(ArmIk, ContinuityWindowKeepsTheElbowWhereTheGlobalOptimumJumps) {
     EXPECT_LE(step, options.maxSwivelStepDeg + 0.5f);
     EXPECT_LT(held.reachErrorMm, 0.05f);
 }
+
+// reachedWristMm is where solveArm puts the wrist, to the bit (the transition pacer times the
+// wrists with it instead of full solves): near, far beyond reach, too close to the shoulder.
+TEST(ArmIk, ReachedWristIsTheSolvedWristToTheBit) {
+    int count = 0;
+    for (Side side : {Side::Right, Side::Left}) {
+        const ArmModel arm = defaultArmModel(side);
+        for (float x = -700; x <= 700; x += 70)
+            for (float y = -600; y <= 600; y += 60)
+                for (float z = -100; z <= 700; z += 80) {
+                    const ArmTarget target{arm.shoulderMm + glm::vec3(x, y, z) * (x > 0.0f ? 1.0f : 0.2f),
+                                           palmInFingersForward()};
+                    const glm::vec3 reached = reachedWristMm(arm, target), solved = solveArm(arm, target).wristMm;
+                    ASSERT_EQ(reached.x, solved.x);
+                    ASSERT_EQ(reached.y, solved.y);
+                    ASSERT_EQ(reached.z, solved.z);
+                    count += glm::length(target.wristMm - solved) > 0.5f;
+                }
+    }
+    EXPECT_GT(count, 100);  // the clamped reach is among the cases
+}
