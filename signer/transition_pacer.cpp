@@ -41,8 +41,8 @@ double pacedTransitionSeconds(const SignerRig& rig, const stimuli::TransitionQue
         glm::vec3 right(0.0f), left(0.0f);
         for (int i = 0; i <= samples; ++i) {
             const SignerPosture posture = clip.postureAt(seconds * i / samples);
-            const glm::vec3 r = rig.solveArm(hand::Side::Right, posture).wristMm;
-            const glm::vec3 l = rig.solveArm(hand::Side::Left, posture).wristMm;
+            const glm::vec3 r = rig.reachedWristMm(hand::Side::Right, posture);
+            const glm::vec3 l = rig.reachedWristMm(hand::Side::Left, posture);
             if (i > 0) peak = std::max(peak, std::max(glm::distance(r, right), glm::distance(l, left)) * samples / seconds);
             right = r;
             left = l;
