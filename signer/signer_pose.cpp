@@ -1,4 +1,5 @@
 #include "signer/signer_pose.hpp"
+#include "signer/arm_memo.hpp"
 
 #include "signer/avatar_face.hpp"
 #include "stimuli/json_source.hpp"
@@ -199,7 +200,7 @@ render::Scene loadSignerAvatar(const std::filesystem::path& file, const BoneMapp
 }
 
 SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, const hand::HandModel& handModel)
-    : scene_(&scene), handModel_(handModel) {
+    : scene_(&scene), handModel_(handModel), armMemo_(std::make_shared<ArmMemo>()) {
     const auto lookup = [&](const std::string& vrm) { return findBone(scene, mapping, vrm); };
     // An entry naming a node the avatar lacks is the bone map's mistake, not the avatar's.
     for (const auto& [vrm, node] : mapping.nodes) {
@@ -403,7 +404,7 @@ hand::ArmPose SignerRig::solveArm(hand::Side side, const SignerPosture& posture)
     hand::ArmSolveOptions options;
     options.previousElbowDirection = right ? posture.rightElbowHint : posture.leftElbowHint;
     options.maxSwivelStepDeg = kElbowHintWindowDeg;
-    return hand::solveArm(raisedArm(side, posture.nonManual), target, options);
+    return armMemo_->solve(raisedArm(side, posture.nonManual), target, options);
 }
 
 glm::vec3 SignerRig::reachedWristMm(hand::Side side, const SignerPosture& posture) const {

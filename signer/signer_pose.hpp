@@ -31,6 +31,7 @@
 #include <array>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -150,6 +151,8 @@ struct PoseReport {
     hand::GazePose gaze;
 };
 
+class ArmMemo;  // signer/arm_memo.hpp
+
 class SignerRig {
 public:
     // Finds every required bone (VRM names, or `mapping` VRM -> node name). Throws InputError
@@ -210,6 +213,8 @@ private:
     std::array<std::optional<glm::vec3>, 2> shoulderBoneMm_;  // right, left shoulder bones, body frame
     float neckLengthMm_ = 90.0f;             // neck bone to head bone
     float torsoLengthMm_ = 300.0f;           // spine bone to the shoulder joints' midpoint
+    // The solutions solveArm gave (shared by copies of the rig: its key holds every input).
+    std::shared_ptr<ArmMemo> armMemo_;
     // The arm model with the shoulder joint where the raised shoulder bone carries it.
     hand::ArmModel raisedArm(hand::Side side, const NonManualPosture& nonManual) const;
 };
