@@ -91,4 +91,15 @@ hand::ArmPose ArmMemo::solve(const hand::ArmModel& arm, const hand::ArmTarget& t
     return pose;
 }
 
+std::optional<double> PacerMemo::find(const std::string& key) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (const auto found = seconds_.find(key); found != seconds_.end()) return found->second;
+    return std::nullopt;
+}
+
+void PacerMemo::add(const std::string& key, double seconds) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    seconds_.emplace(key, seconds);
+}
+
 }  // namespace signstim::signer

@@ -10,7 +10,10 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <mutex>
+#include <optional>
+#include <string>
 #include <unordered_map>
 
 namespace signstim::signer {
@@ -35,6 +38,19 @@ private:
     static constexpr std::size_t kGenerationSize = 1u << 16;
     std::mutex mutex_;
     Map newer_, older_;
+};
+
+// The rig's memory of the transition pacer's answers (signer/transition_pacer.cpp), by the
+// exact bits of the query: every pacer of the rig shares it (a test or a study makes one per
+// story; stories share many transitions). Thread-safe.
+class PacerMemo {
+public:
+    std::optional<double> find(const std::string& key);
+    void add(const std::string& key, double seconds);
+
+private:
+    std::mutex mutex_;
+    std::map<std::string, double> seconds_;
 };
 
 }  // namespace signstim::signer

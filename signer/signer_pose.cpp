@@ -200,7 +200,8 @@ render::Scene loadSignerAvatar(const std::filesystem::path& file, const BoneMapp
 }
 
 SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, const hand::HandModel& handModel)
-    : scene_(&scene), handModel_(handModel), armMemo_(std::make_shared<ArmMemo>()) {
+    : scene_(&scene), handModel_(handModel), armMemo_(std::make_shared<ArmMemo>()),
+      pacerMemo_(std::make_shared<PacerMemo>()) {
     const auto lookup = [&](const std::string& vrm) { return findBone(scene, mapping, vrm); };
     // An entry naming a node the avatar lacks is the bone map's mistake, not the avatar's.
     for (const auto& [vrm, node] : mapping.nodes) {

@@ -151,7 +151,8 @@ struct PoseReport {
     hand::GazePose gaze;
 };
 
-class ArmMemo;  // signer/arm_memo.hpp
+class ArmMemo;    // signer/arm_memo.hpp
+class PacerMemo;  // signer/arm_memo.hpp
 
 class SignerRig {
 public:
@@ -189,6 +190,8 @@ public:
     // Where solveArm puts the wrist (its wristMm, the same bits) without seeking the elbow
     // (hand::reachedWristMm): for what needs the wrists alone, as the transition pacer.
     glm::vec3 reachedWristMm(hand::Side side, const SignerPosture& posture) const;
+    // What the transition pacers of this rig (and its copies) found (signer/transition_pacer.cpp).
+    PacerMemo& pacerMemo() const { return *pacerMemo_; }
     // The head and eyes as pose() turns them (straight ahead without a gaze point).
     hand::GazePose solveGazeAt(const SignerPosture& posture) const;
 
@@ -215,6 +218,7 @@ private:
     float torsoLengthMm_ = 300.0f;           // spine bone to the shoulder joints' midpoint
     // The solutions solveArm gave (shared by copies of the rig: its key holds every input).
     std::shared_ptr<ArmMemo> armMemo_;
+    std::shared_ptr<PacerMemo> pacerMemo_;
     // The arm model with the shoulder joint where the raised shoulder bone carries it.
     hand::ArmModel raisedArm(hand::Side side, const NonManualPosture& nonManual) const;
 };

@@ -133,8 +133,9 @@ inline constexpr double kHeadPeakDegPerSecond = 250.0;
 // stimuli/ needs to know nothing of the body. A transition the clip routes inside a story is
 // the same: its ends are the same keys (a coarticulated end, which keeps a neighbour's
 // velocity, differs a little; the timing's 2.45 m/s under SPEC §6.2's 2.5 m/s covers it).
-// Remembers what it answered (the builder asks again for every version); safe to call
-// from several threads. The pacer keeps `signer` alive.
+// The rig remembers what it answered (SignerRig::pacerMemo: the builder asks again for every
+// version, and every pacer of the rig shares it); safe to call from several threads. The
+// pacer keeps `signer` alive.
 stimuli::TransitionPacer transitionPacer(std::shared_ptr<const Signer> signer);
 // The same with a rig that outlives the pacer (tests that hold a Signer).
 stimuli::TransitionPacer transitionPacer(const SignerRig& rig);

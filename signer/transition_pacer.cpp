@@ -1,6 +1,7 @@
 // The timeline builder's pacer (signer/timeline_clip.hpp, transitionPacer): a transition or a
 // verb path is timed by the path the posed wrists take, its detour included, so that no wrist
 // passes SPEC §6.2's peak speed. Apart from TimelineClip, which it plays, as its own concern.
+#include "signer/arm_memo.hpp"
 #include "signer/signer.hpp"
 #include "signer/timeline_clip.hpp"
 
@@ -67,15 +68,12 @@ double pacedTransitionSeconds(const SignerRig& rig, const stimuli::TransitionQue
 
 namespace {
 
-// `keepAlive` owns what `rig` belongs to (or nothing).
+// `keepAlive` owns what `rig` belongs to (or nothing). The answers are remembered by the rig
+// (SignerRig::pacerMemo), so every pacer of the rig shares them.
 stimuli::TransitionPacer pacerOf(const SignerRig* rig, std::shared_ptr<const void> keepAlive) {
-    struct Memory {
-        std::mutex mutex;
-        std::map<std::string, double> seconds;
-    };
-    auto memory = std::make_shared<Memory>();
-    return [rig, keepAlive, memory](const stimuli::TransitionQuery& query) {
-        // The query's exact bits (the controls follow from the handshape's name).
+    return [rig, keepAlive](const stimuli::TransitionQuery& query) {
+        // The query's exact bits: its keys' rest flags, poses and hand controls (pacers of
+        // different handshape libraries share the rig's memory), its length and limit.
         std::string key;
         const auto add = [&key](const void* bytes, std::size_t size) { key.append(static_cast<const char*>(bytes), size); };
         add(&query.seconds, sizeof query.seconds);
@@ -87,16 +85,23 @@ stimuli::TransitionPacer pacerOf(const SignerRig* rig, std::shared_ptr<const voi
                                          k.pose.orientation.w, k.pose.orientation.x, k.pose.orientation.y,
                                          k.pose.orientation.z};
                 add(values, sizeof values);
+                const hand::HandControls& c = k.controls;
+                const float thumb[] = {c.thumb.bendDeg, c.thumb.spreadDeg, c.thumb.mcpDeg, c.thumb.ipDeg};
+                add(thumb, sizeof thumb);
+                for (const hand::FingerControls& f : c.fingers) {
+                    const float finger[] = {f.spreadDeg, f.bend, f.hook};
+                    add(finger, sizeof finger);
+                }
                 key += k.handshape;
                 key += '\0';
             }
-        {
-            const std::lock_guard<std::mutex> lock(memory->mutex);
-            if (const auto found = memory->seconds.find(key); found != memory->seconds.end()) return found->second;
-        }
+        // Controls with fields the key does not list (hand/hand_model.hpp changed): this
+        // pacer's answers are not shared.
+        constexpr bool kControlsKeyed = sizeof(hand::HandControls) == sizeof(float) * (4 + 3 * hand::kFingerCount);
+        if (!kControlsKeyed) return pacedTransitionSeconds(*rig, query);
+        if (const std::optional<double> known = rig->pacerMemo().find(key)) return *known;
         const double seconds = pacedTransitionSeconds(*rig, query);
-        const std::lock_guard<std::mutex> lock(memory->mutex);
-        memory->seconds.emplace(key, seconds);
+        rig->pacerMemo().add(key, seconds);
         return seconds;
     };
 }
