@@ -40,9 +40,13 @@ struct TimelineOptions {
     double repetitionShortening = 0.88;
     // [D] Citation forms are longer than signs in connected signing (ASL-LEX 2.0's median
     // SignDuration of a citation form is 834 ms; at 2-2.3 signs/s a sign and its transition
-    // take ~450 ms, the sign itself ~250-300 ms): the lexicon's keys (citation timing, a mean
-    // of 0.49 s) are scaled by this.
-    double signScale = 0.5;
+    // take ~450 ms, the sign itself ~250-300 ms): the lexicon's keys (citation timing) are
+    // scaled by this. 0.4 × the lexicon's mean citation sign (0.62 s since issue 22 took the
+    // durations from ASL-LEX 2.0's SignDuration) = 0.25 s, the sign in context that 0.5 gave
+    // before it (0.5 × 0.49 s): issue 22 changed the citation forms, not the pace of signing
+    // in context. Shorter signs, not faster transitions: signers prefer an avatar's signs a
+    // little faster than a human's and its transitions slower (Al-khazraji et al., ASSETS 2021).
+    double signScale = 0.4;
     // Transitions between items. Fitts-like (MacKenzie 1992's form of Fitts 1954):
     // T = a + b·log2(1 + D/W), D the hands' largest displacement, W the target's tolerance:
     // smaller where the next item touches the body or the other hand. [D] a = 0.04 s,
