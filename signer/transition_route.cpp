@@ -141,6 +141,14 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     constexpr float kPathPerChord = 1.25f;
     constexpr int kMostHalvings = 5;
     constexpr int kMostRoutings = 4;
+    // [D] Where a hand's capsules move faster than kJumpMmPerSecond between two instants a
+    // millisecond apart (8 times SPEC §6.2's 2.5 m/s), the pose jumps: the arm solver has
+    // switched between two solutions (a hand turned beyond the wrist's range, clamped to one
+    // side of it or the other). No bound holds across a jump, and where it falls moves a little
+    // with the route, so the instants within kJumpWindow halvings' steps of it on either side
+    // are judged with the grid's.
+    constexpr float kJumpMmPerSecond = 20000.0f;
+    constexpr int kJumpWindow = 8;
     Detour detour;
     detour.startSeconds = startSeconds;
     detour.endSeconds = endSeconds;
@@ -248,7 +256,7 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
         std::vector<Bump> bumps;
         std::vector<Sample> samples;
     };
-    const auto route = [&]() {
+    const auto route = [&](const std::vector<Bump>& seed) {
         Route straightRoute;
         speedAllowed = std::max(kWristPeakSpeedMmPerSecond, peakSpeed({}));
         float shortfall = follow({}, &straightRoute.samples, std::numeric_limits<float>::infinity());
@@ -283,8 +291,24 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
         };
         const float straightShortfall = shortfall;
         std::optional<std::pair<Route, float>> withinSpeed;  // the first pass's detour
-        for (int pass = 0; pass < 2; ++pass) {
-            if (pass == 1) {
+        // A route found before, on fewer instants, is where the search goes on from, in the pass
+        // whose speed it keeps: judged on the instants added since, it falls short only there.
+        int firstPass = 0;
+        if (!seed.empty()) {
+            if (peakSpeed(seed) > speedAllowed) {
+                firstPass = 1;
+                speedAllowed = std::numeric_limits<double>::infinity();
+            }
+            std::vector<Sample> seeded;
+            const float seededShortfall = follow(seed, &seeded, std::numeric_limits<float>::infinity());
+            if (seededShortfall < shortfall) {
+                bumps = seed;
+                samples = std::move(seeded);
+                shortfall = seededShortfall;
+            }
+        }
+        for (int pass = firstPass; pass < 2; ++pass) {
+            if (pass == 1 && firstPass == 0) {
                 if (shortfall <= kShortfallToleranceMm) break;
                 withinSpeed = std::make_pair(Route{bumps, samples}, shortfall);
                 bumps.clear();
@@ -332,7 +356,7 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     // The route judged between its instants (kBetweenToleranceMm above): its largest shortfall
     // at any instant sampled, and in `shortInstants` the deepest instant of each interval of the
     // judged ones where some instant between them falls short.
-    const auto judgeBetween = [&](const Route& routed, std::vector<double>& shortInstants) {
+    const auto judgeBetween = [&](const Route& routed, std::vector<double>& shortInstants, std::vector<double>& jumps) {
         const std::vector<Bump>& bumps = routed.bumps;
         std::vector<Sample> samples{first};
         samples.insert(samples.end(), routed.samples.begin(), routed.samples.end());
@@ -352,7 +376,13 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
             float shortfallMm = kShortfallToleranceMm + kBetweenToleranceMm;
         };
         const auto halve = [&](const auto& self, const Sample& a, const Sample& b, int halvings, Deepest& deepest) -> void {
-            if (halvings >= kMostHalvings || boundBetween(a, b) <= kShortfallToleranceMm + kBetweenToleranceMm) return;
+            if (boundBetween(a, b) <= kShortfallToleranceMm + kBetweenToleranceMm) return;
+            if (halvings >= kMostHalvings) {
+                const float farthest = std::max(farthestMove(a.capsules.right, b.capsules.right),
+                                                farthestMove(a.capsules.left, b.capsules.left));
+                if (farthest > kJumpMmPerSecond * (b.seconds - a.seconds)) jumps.push_back(0.5 * (a.seconds + b.seconds));
+                return;
+            }
             const double seconds = 0.5 * (a.seconds + b.seconds);
             const Sample middle = sampleOf(withBumps(bumps, straightPostureAt(seconds), seconds), seconds);
             const float shortfall = shortfallOf(middle.gaps);
@@ -370,19 +400,25 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     };
 
     // Routed, judged between its instants, and routed again with the short instants judged
-    // too, while that helps; kept: the route that falls shortest nowhere.
+    // too (from the best route so far), while that helps; kept: the route that falls least
+    // short anywhere.
     float bestShortfall = std::numeric_limits<float>::infinity();
     for (int routing = 0; routing < kMostRoutings; ++routing) {
-        const Route routed = route();
-        std::vector<double> shortInstants;
-        const float shortfall = judgeBetween(routed, shortInstants);
+        const Route routed = route(detour.bumps);
+        std::vector<double> shortInstants, jumps;
+        const float shortfall = judgeBetween(routed, shortInstants, jumps);
         if (shortfall < bestShortfall) {
             bestShortfall = shortfall;
             detour.bumps = routed.bumps;
         }
         if (shortInstants.empty()) break;
+        const double step = 1.0 / (kRoutingFramesPerSecond * (1 << kMostHalvings));
+        for (const double jump : jumps)
+            for (int k = -kJumpWindow; k <= kJumpWindow; ++k)
+                if (jump + k * step > startSeconds && jump + k * step < endSeconds) shortInstants.push_back(jump + k * step);
         for (const double t : shortInstants) {
             const auto at = std::lower_bound(times.begin(), times.end(), t);
+            if (at != times.end() && std::abs(*at - t) < 1e-9) continue;
             straight.insert(straight.begin() + (at - times.begin()), straightPostureAt(t));
             times.insert(at, t);
         }
