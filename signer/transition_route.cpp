@@ -145,10 +145,10 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     // millisecond apart (8 times SPEC §6.2's 2.5 m/s), the pose jumps: the arm solver has
     // switched between two solutions (a hand turned beyond the wrist's range, clamped to one
     // side of it or the other). No bound holds across a jump, and where it falls moves a little
-    // with the route, so the instants within kJumpWindow halvings' steps of it on either side
-    // are judged with the grid's.
+    // with the route, so where an instant found short lies within kJumpWindow halvings' steps
+    // of a jump, the instants that many steps on either side of the nearest jump are judged too.
     constexpr float kJumpMmPerSecond = 20000.0f;
-    constexpr int kJumpWindow = 8;
+    constexpr int kJumpWindow = 3;
     Detour detour;
     detour.startSeconds = startSeconds;
     detour.endSeconds = endSeconds;
@@ -413,9 +413,19 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
         }
         if (shortInstants.empty()) break;
         const double step = 1.0 / (kRoutingFramesPerSecond * (1 << kMostHalvings));
-        for (const double jump : jumps)
+        // The window of the jump nearest each short instant, where one is that near.
+        std::vector<double> around, windowed;
+        for (const double t : shortInstants) {
+            const double* nearest = nullptr;
+            for (const double& jump : jumps)
+                if (std::abs(t - jump) <= kJumpWindow * step && (!nearest || std::abs(t - jump) < std::abs(t - *nearest)))
+                    nearest = &jump;
+            if (!nearest || std::find(windowed.begin(), windowed.end(), *nearest) != windowed.end()) continue;
+            windowed.push_back(*nearest);
             for (int k = -kJumpWindow; k <= kJumpWindow; ++k)
-                if (jump + k * step > startSeconds && jump + k * step < endSeconds) shortInstants.push_back(jump + k * step);
+                if (*nearest + k * step > startSeconds && *nearest + k * step < endSeconds) around.push_back(*nearest + k * step);
+        }
+        shortInstants.insert(shortInstants.end(), around.begin(), around.end());
         for (const double t : shortInstants) {
             const auto at = std::lower_bound(times.begin(), times.end(), t);
             if (at != times.end() && std::abs(*at - t) < 1e-9) continue;
