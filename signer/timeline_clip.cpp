@@ -12,11 +12,6 @@
 namespace signstim::signer {
 namespace {
 
-// [D] The most a detour's bump adds to the wrist's speed at its peak (see routeTransition).
-constexpr double kDetourPeakSpeedMmPerSecond = 1200.0;
-// SPEC §6.2: peak wrist speed of natural signing.
-constexpr double kWristPeakSpeedMmPerSecond = 2500.0;
-
 // [D] A glance at a referent: 1.2 m out along its direction, 12° below eye level.
 constexpr double kGazeDistanceMm = 1200.0;
 constexpr double kGazeDropDegrees = 12.0;
@@ -27,63 +22,6 @@ struct Resolved {
     hand::ArmTarget target;
     hand::HandControls controls;
 };
-
-// The shapes a detour's bumps take: u^a·(1−u)^b scaled to 1 at its peak, u = a/(a+b); with
-// a, b ≥ 3 its velocity and acceleration vanish at both ends of the transition. Early, middle
-// and late peaks, for hands that would meet soon after leaving, halfway, or just before
-// arriving (an item that ends or starts in contact).
-struct BumpShape {
-    int a, b;
-};
-constexpr std::array<BumpShape, 3> kBumpShapes{{{3, 3}, {3, 6}, {6, 3}}};
-
-float bump(int shape, double u) {
-    if (u <= 0.0 || u >= 1.0) return 0.0f;
-    const auto [a, b] = kBumpShapes[static_cast<std::size_t>(shape)];
-    const double peak = static_cast<double>(a) / (a + b);
-    return static_cast<float>(std::pow(u / peak, a) * std::pow((1.0 - u) / (1.0 - peak), b));
-}
-
-// The steepest slope of a bump's shape, |d bump / du| at its maximum (sampled; 1e-3 of u).
-double steepestSlope(int shape) {
-    double steepest = 0.0;
-    for (int i = 0; i < 1000; ++i) {
-        const double u = i / 1000.0;
-        steepest = std::max(steepest, std::abs(static_cast<double>(bump(shape, u + 1e-3)) - bump(shape, u)) / 1e-3);
-    }
-    return steepest;
-}
-
-bool sameTarget(const std::optional<hand::ArmTarget>& a, const std::optional<hand::ArmTarget>& b) {
-    return glm::distance(a->wristMm, b->wristMm) < 0.01f && std::abs(glm::dot(a->handRotation, b->handRotation)) > 0.999999f;
-}
-
-bool sameControls(const hand::HandControls& a, const hand::HandControls& b) {
-    if (a.thumb.bendDeg != b.thumb.bendDeg || a.thumb.spreadDeg != b.thumb.spreadDeg || a.thumb.mcpDeg != b.thumb.mcpDeg ||
-        a.thumb.ipDeg != b.thumb.ipDeg)
-        return false;
-    for (std::size_t f = 0; f < a.fingers.size(); ++f)
-        if (a.fingers[f].spreadDeg != b.fingers[f].spreadDeg || a.fingers[f].bend != b.fingers[f].bend ||
-            a.fingers[f].hook != b.fingers[f].hook)
-            return false;
-    return true;
-}
-
-// How close the hands come to each other and to the body where the arms put them.
-struct Gaps {
-    float hands = 0.0f, rightBody = 0.0f, leftBody = 0.0f;
-    Approach handsApproach;
-};
-
-Gaps measure(const SignerRig& rig, const SignerPosture& posture, const PoseReport& arms) {
-    const SignerCapsules capsules = signerCapsules(rig, posture, arms);
-    Gaps g;
-    g.handsApproach = closestApproach(capsules.right, capsules.left);
-    g.hands = g.handsApproach.gapMm;
-    g.rightBody = closestApproach(capsules.right, bodyCapsules()).gapMm;
-    g.leftBody = closestApproach(capsules.left, bodyCapsules()).gapMm;
-    return g;
-}
 
 }  // namespace
 
@@ -172,158 +110,6 @@ PoseReport TimelineClip::arms(const SignerPosture& posture) const {
     report.right = rig_->solveArm(hand::Side::Right, posture);
     report.left = rig_->solveArm(hand::Side::Left, posture);
     return report;
-}
-
-TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double endSeconds) const {
-    // [D] The transition is followed on the grid of kRoutingFramesPerSecond. Bumps
-    // are added one at a time, at most three, while they help: each shape and way aside —
-    // apart along the line between the hands' closest points, to the sides, up, down,
-    // forward — is tried at 40 mm per hand at its peak, then the three most promising at each
-    // size from 10 to 160 mm, and the one that leaves the smallest shortfall is kept. A
-    // transition they cannot clear keeps the best they found (the clearance check reports it).
-    constexpr float kShortfallToleranceMm = 0.5f;
-    constexpr int kMostBumps = 3;
-    constexpr std::array<float, 5> kSizesMm{10.0f, 20.0f, 40.0f, 80.0f, 160.0f};
-    Detour detour;
-    detour.startSeconds = startSeconds;
-    detour.endSeconds = endSeconds;
-    const SignerPosture from = straightPostureAt(startSeconds), to = straightPostureAt(endSeconds);
-    const bool rightMoves = !sameTarget(from.rightWrist, to.rightWrist) || !sameControls(from.rightHand, to.rightHand);
-    const bool leftMoves = !sameTarget(from.leftWrist, to.leftWrist) || !sameControls(from.leftHand, to.leftHand);
-    if (!rightMoves && !leftMoves) return detour;
-
-    // The frames inside the transition, and its end: a grid from the transition's start, so
-    // that the same transition is routed alike wherever it falls in a timeline (the timeline
-    // builder's pacer, transitionPacer, routes it on its own to time it).
-    std::vector<double> times;
-    for (int f = 1; startSeconds + f / kRoutingFramesPerSecond < endSeconds; ++f)
-        times.push_back(startSeconds + f / kRoutingFramesPerSecond);
-    times.push_back(endSeconds);
-    std::vector<SignerPosture> straight;
-    for (double t : times) straight.push_back(straightPostureAt(t));
-    const auto offsetAt = [&](const std::vector<Bump>& bumps, std::size_t j, bool right) {
-        glm::vec3 offset(0.0f);
-        const double u = (times[j] - startSeconds) / (endSeconds - startSeconds);
-        for (const Bump& b : bumps) offset += bump(b.shape, u) * (right ? b.rightMm : b.leftMm);
-        return offset;
-    };
-    // The hands along the transition with `bumps`: every frame's gaps, or (bounded) the
-    // largest shortfall, given up on as soon as it exceeds `bound`.
-    float handsNeeded = 0.0f, rightBodyNeeded = 0.0f, leftBodyNeeded = 0.0f;
-    // The wrists' peak speed along the transition with `bumps`, on the routing grid.
-    const auto peakSpeed = [&](const std::vector<Bump>& bumps) {
-        double peak = 0.0, before = startSeconds;
-        glm::vec3 right = from.rightWrist->wristMm, left = from.leftWrist->wristMm;
-        for (std::size_t j = 0; j < times.size(); ++j) {
-            const glm::vec3 r = straight[j].rightWrist->wristMm + offsetAt(bumps, j, true);
-            const glm::vec3 l = straight[j].leftWrist->wristMm + offsetAt(bumps, j, false);
-            if (times[j] > before)
-                peak = std::max({peak, glm::distance(r, right) / (times[j] - before), glm::distance(l, left) / (times[j] - before)});
-            right = r;
-            left = l;
-            before = times[j];
-        }
-        return peak;
-    };
-    // SPEC §6.2: a detour is sought first among those that keep the wrists within the peak
-    // speed of natural signing (or the straight path's own, where that is faster: the
-    // timing's to pace); only where none of them clears does the clearance win (the hands
-    // never pass through each other or the body) and the speed is left to the timing.
-    double speedAllowed = std::max(kWristPeakSpeedMmPerSecond, peakSpeed({}));
-    const auto follow = [&](const std::vector<Bump>& bumps, std::vector<Gaps>* gaps, float bound) {
-        if (!bumps.empty() && peakSpeed(bumps) > speedAllowed) return std::numeric_limits<float>::infinity();
-        float worst = 0.0f;
-        for (std::size_t j = 0; j < times.size(); ++j) {
-            SignerPosture p = straight[j];
-            p.rightWrist->wristMm += offsetAt(bumps, j, true);
-            p.leftWrist->wristMm += offsetAt(bumps, j, false);
-            const Gaps g = measure(*rig_, p, arms(p));
-            if (gaps) gaps->push_back(g);
-            worst = std::max({worst, handsNeeded - g.hands, rightBodyNeeded - g.rightBody, leftBodyNeeded - g.leftBody});
-            if (worst > bound) break;
-        }
-        return worst;
-    };
-    std::vector<Gaps> straightGaps;
-    follow({}, &straightGaps, std::numeric_limits<float>::infinity());
-    // Never closer than the clearance, or than the ends are (an item there touches).
-    const Gaps first = measure(*rig_, from, arms(from));
-    const Gaps& last = straightGaps.back();
-    handsNeeded = std::min({kTransitionClearanceMm, first.hands, last.hands});
-    // A hand that does not move in the transition (resting) is not asked to clear the body.
-    constexpr float kNotAsked = -std::numeric_limits<float>::infinity();
-    rightBodyNeeded = rightMoves ? std::min({kTransitionClearanceMm, first.rightBody, last.rightBody}) : kNotAsked;
-    leftBodyNeeded = leftMoves ? std::min({kTransitionClearanceMm, first.leftBody, last.leftBody}) : kNotAsked;
-    float shortfall = follow({}, nullptr, std::numeric_limits<float>::infinity());
-    if (shortfall <= kShortfallToleranceMm) return detour;
-
-    // Ways aside, per millimetre: (right hand, left hand). A hand that does not move in the
-    // transition stays where it is.
-    const Gaps& closest = *std::min_element(straightGaps.begin(), straightGaps.end(),
-                                            [](const Gaps& a, const Gaps& b) { return a.hands < b.hands; });
-    glm::vec3 apart = closest.handsApproach.onFirst - closest.handsApproach.onSecond;
-    apart = glm::length(apart) > 1e-3f ? glm::normalize(apart) : glm::vec3(-1.0f, 0.0f, 0.0f);
-    const glm::vec3 rightward(-1.0f, 0.0f, 0.0f), up(0.0f, 1.0f, 0.0f), forward(0.0f, 0.0f, 1.0f);
-    const std::array<std::pair<glm::vec3, glm::vec3>, 5> ways{{{apart, -apart},
-                                                              {rightward, -rightward},
-                                                              {up, -up},
-                                                              {-up, up},
-                                                              {forward, forward}}};
-    const auto withBump = [&](int shape, const std::pair<glm::vec3, glm::vec3>& way, float size) {
-        std::vector<Bump> trial = detour.bumps;
-        trial.push_back({shape, rightMoves ? size * way.first : glm::vec3(0.0f), leftMoves ? size * way.second : glm::vec3(0.0f)});
-        return trial;
-    };
-    // A bump adds its own speed to the wrist's: size times the shape's steepest slope over the
-    // transition's length. [D] At most kDetourPeakSpeedMmPerSecond, so that a detour in a short
-    // transition (0.1-0.2 s at the natural pace) does not take the wrist past SPEC §6.2's
-    // 2.5 m/s; a bigger one is not tried.
-    const auto largestBump = [&](int shape) {
-        return static_cast<float>(kDetourPeakSpeedMmPerSecond * (endSeconds - startSeconds) / steepestSlope(shape));
-    };
-    const float straightShortfall = shortfall;
-    std::optional<std::pair<std::vector<Bump>, float>> withinSpeed;  // the first pass's detour
-    for (int pass = 0; pass < 2; ++pass) {
-        if (pass == 1) {
-            if (shortfall <= kShortfallToleranceMm) break;
-            withinSpeed = std::make_pair(detour.bumps, shortfall);
-            detour.bumps.clear();
-            shortfall = straightShortfall;
-            speedAllowed = std::numeric_limits<double>::infinity();
-        }
-        while (static_cast<int>(detour.bumps.size()) < kMostBumps && shortfall > kShortfallToleranceMm) {
-            // Every shape and way at a middle size; then every size of the three most promising.
-            struct Trial {
-                float shortfallMm;
-                int shape;
-                std::size_t way;
-            };
-            std::vector<Trial> trials;
-            for (int shape = 0; shape < static_cast<int>(kBumpShapes.size()); ++shape)
-                for (std::size_t w = 0; w < ways.size(); ++w)
-                    if ((rightMoves && ways[w].first != glm::vec3(0.0f)) || (leftMoves && ways[w].second != glm::vec3(0.0f)))
-                        trials.push_back({follow(withBump(shape, ways[w], kSizesMm[2]), nullptr, shortfall), shape, w});
-            std::stable_sort(trials.begin(), trials.end(),
-                             [](const Trial& a, const Trial& b) { return a.shortfallMm < b.shortfallMm; });
-            float best = shortfall - 0.25f;  // a bump must help by a quarter millimetre
-            std::optional<Bump> chosen;
-            for (std::size_t t = 0; t < std::min<std::size_t>(3, trials.size()); ++t)
-                for (float size : kSizesMm) {
-                    if (size > largestBump(trials[t].shape)) break;
-                    std::vector<Bump> trial = withBump(trials[t].shape, ways[trials[t].way], size);
-                    const float result = follow(trial, nullptr, best);
-                    if (result < best) {
-                        best = result;
-                        chosen = trial.back();
-                    }
-                }
-            if (!chosen) break;
-            detour.bumps.push_back(*chosen);
-            shortfall = best;
-        }
-    }
-    if (withinSpeed && withinSpeed->second <= shortfall) detour.bumps = withinSpeed->first;
-    return detour;
 }
 
 void TimelineClip::settleTouches() {
@@ -497,8 +283,8 @@ SignerPosture TimelineClip::postureAt(double seconds) const {
         if (seconds <= detour.startSeconds || seconds >= detour.endSeconds) continue;
         const double u = (seconds - detour.startSeconds) / (detour.endSeconds - detour.startSeconds);
         for (const Bump& b : detour.bumps) {
-            posture.rightWrist->wristMm += bump(b.shape, u) * b.rightMm;
-            posture.leftWrist->wristMm += bump(b.shape, u) * b.leftMm;
+            posture.rightWrist->wristMm += bumpAt(b.shape, u) * b.rightMm;
+            posture.leftWrist->wristMm += bumpAt(b.shape, u) * b.leftMm;
         }
         break;
     }

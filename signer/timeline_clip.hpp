@@ -20,8 +20,13 @@
 // transition, so the keys and the smoothness of the profile are kept. The detour keeps the
 // hands at least kTransitionClearanceMm apart, or as close as they are at the transition's
 // ends when an item there has them touching; a bump adds at most kDetourPeakSpeedMmPerSecond
-// (timeline_clip.cpp) to the wrist's speed. A detour depends only on the keys at its ends,
-// so frames outside the verb slots stay the same in every version.
+// (transition_route.cpp) to the wrist's speed. The detour is sought on instants of the
+// transition's own time (kRoutingFramesPerSecond) and judged between them, by a bound on how
+// far the hands' capsules travel from one instant to the next, refined where the bound falls
+// short; an instant found short there is judged too, and the transition routed again (issue
+// 21: the hands go into neither the body nor each other at any output's frames). A detour
+// depends only on the keys at its ends, so frames outside the verb slots stay the same in
+// every version.
 //
 // Touches come to the surface (issue 22: contact as an event the motion reaches; issue 21:
 // the hands never pass through each other). A sign's keys say where the wrists go, from
@@ -78,7 +83,9 @@ private:
     SignerPosture straightPostureAt(double seconds, bool settled = true) const;
     glm::vec2 headAt(double seconds) const;
     PoseReport arms(const SignerPosture& posture) const;
+    // A transition's detour (signer/transition_route.cpp), and a bump's shape at u in [0, 1].
     Detour routeTransition(double startSeconds, double endSeconds) const;
+    static float bumpAt(int shape, double u);
     void settleTouches();
 
     const SignerRig* rig_;
@@ -114,7 +121,9 @@ inline constexpr double kTouchFramesPerSecond = 60.0;
 inline constexpr double kTouchRateMmPerSecond = 300.0;
 // [D] A transition's clearance is checked at this many instants per second from its start (a
 // grid of the timeline's own time, not of any output's frames: the detour, like every pose,
-// depends on the timeline alone; and on the transition alone, not where it falls).
+// depends on the timeline alone; and on the transition alone, not where it falls), and
+// between them by a bound on the hands' motion (transition_route.cpp), so that a finer grid
+// is not needed for any output rate.
 inline constexpr double kRoutingFramesPerSecond = 30.0;
 
 // [S] Peak head angular speed in gaze shifts: up to ~300°/s for large shifts (Freedman &

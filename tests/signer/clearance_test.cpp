@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -201,6 +202,56 @@ TEST(Clearance, TransitionsDetourAroundTheOtherHandAndKeepTheirKeys) {
     }
 }
 
+TEST(Clearance, TransitionsClearBetweenTheirRoutingInstants) {
+    // Synthetic: the right hand crosses the held left hand in a quick transition (0.1 s), so
+    // fast that at the routing grid's instants (30 a second from the transition's start) the
+    // straight path is clear on either side of the left hand and meets it only between them.
+    // The route is judged between its instants: at 480 frames a second no frame of the
+    // transition has the hands in each other.
+    const World& w = world();
+    const signer::SignerRig& rig = w.signer.rig();
+    stimuli::Timeline timeline;
+    timeline.durationSeconds = 0.7;
+    const glm::dvec3 forward(0, 0, 1), down(0, -1, 0), right(1, 0, 0);
+    const double leftX = -27.0, leftY = -70.0;
+    const auto rightAt = [&](double t, double x) { return key(t, {x, -40, 300}, forward, down, "B"); };
+    timeline.right = {rightAt(0.0, -200), rightAt(0.3, -200), rightAt(0.4, 200), rightAt(0.7, 200)};
+    for (double t : {0.0, 0.3, 0.4, 0.7}) timeline.left.push_back(key(t, {leftX, leftY, 330}, forward, right, "1"));
+    timeline.spans = {{stimuli::SpanKind::Sign, 0.0, 0.3, "A", 0, 0, 0.0, 0.3, {}},
+                      {stimuli::SpanKind::Sign, 0.3, 0.7, "B", 0, 1, 0.4, 0.7, {}}};
+    timeline.gaze = {{0.0, std::nullopt}, {0.7, std::nullopt}};
+    const signer::TimelineClip clip(rig, timeline);
+
+    // The straight blend at instant t: clear at the grid's instants, through the left hand
+    // between them.
+    const auto straightGap = [&](double t) {
+        signer::SignerPosture p = clip.postureAt(t);
+        p.rightWrist = signer::blendTargets(signer::armTargetFromSigningSpace(timeline.right[1].pose),
+                                            signer::armTargetFromSigningSpace(timeline.right[2].pose),
+                                            static_cast<float>(stimuli::minimumJerk((t - 0.3) / 0.1)));
+        std::vector<hand::Capsule> rightHand, leftHand;
+        signer::handCapsules(rig, hand::Side::Right, p.rightHand, p.rightWrist->wristMm, p.rightWrist->handRotation, rightHand);
+        signer::handCapsules(rig, hand::Side::Left, p.leftHand, p.leftWrist->wristMm, p.leftWrist->handRotation, leftHand);
+        return signer::closestApproach(rightHand, leftHand).gapMm;
+    };
+    float deepestBetween = std::numeric_limits<float>::infinity();
+    for (int f = 1; f <= 3; ++f) {
+        const double t = 0.3 + f / signer::kRoutingFramesPerSecond;
+        ASSERT_GT(straightGap(t), signer::kTransitionClearanceMm) << "grid instant " << t;
+        for (int k = 1; k < 16; ++k) deepestBetween = std::min(deepestBetween, straightGap(t - k / (16.0 * signer::kRoutingFramesPerSecond)));
+    }
+    ASSERT_LT(deepestBetween, -10.0f);
+
+    int judged = 0;
+    for (const signer::ClearanceFrame& frame : signer::clearanceFrames(rig, clip, 480.0)) {
+        if (frame.span >= 0) continue;
+        ++judged;
+        EXPECT_GE(frame.clearance.hands.gapMm, signer::kTransitionClearanceMm - signer::kClearanceToleranceMm)
+            << "at " << frame.seconds << " s";
+    }
+    EXPECT_GT(judged, 40);
+}
+
 TEST(Clearance, TransitionsAreJudgedAtTheItemsOwnKeysNotTheNearestFrame) {
     // An item's keys end between two 30 fps frames (0.41 s): the check poses the signer there
     // too, and a transition that leaves a touch (at the key, -15 mm) is allowed that deep,
@@ -273,14 +324,33 @@ TEST(Clearance, RoutedFramesOutsideTheVerbSlotsAreTheSameInEveryVersion) {
     EXPECT_GT(compared, 300);
 }
 
-// Each default story in the four versions, every frame at 30 fps (and each item's first and last key) as `signstim story` renders it.
+// Each default story in the four versions, every frame at 30 fps (and each item's first and
+// last key) as `signstim story` renders it; with `everyRate`, every frame at each rate a study
+// may render (issue 21: 15, 24, 25, 30, 30000/1001 and 60 fps; 60 holds 15's and 30's).
 class StoryClearance : public testing::TestWithParam<int> {
 protected:
     struct Checked {
         stimuli::Timeline timeline;
         signer::ClearanceSummary summary;
     };
-    static std::vector<Checked> check(int story) {
+    static std::vector<signer::ClearanceFrame> frames(const signer::TimelineClip& clip, bool everyRate) {
+        const signer::SignerRig& rig = world().signer.rig();
+        if (!everyRate) return signer::clearanceFrames(rig, clip);
+        std::vector<signer::ClearanceFrame> all;
+        for (const double fps : {60.0, 24.0, 25.0, 30000.0 / 1001.0}) {
+            const std::vector<signer::ClearanceFrame> at = signer::clearanceFrames(rig, clip, fps);
+            all.insert(all.end(), at.begin(), at.end());
+        }
+        std::stable_sort(all.begin(), all.end(),
+                         [](const signer::ClearanceFrame& a, const signer::ClearanceFrame& b) { return a.seconds < b.seconds; });
+        all.erase(std::unique(all.begin(), all.end(),
+                              [](const signer::ClearanceFrame& a, const signer::ClearanceFrame& b) {
+                                  return b.seconds - a.seconds < 1e-9;
+                              }),
+                  all.end());
+        return all;
+    }
+    static std::vector<Checked> check(int story, bool everyRate = false) {
         const World& w = world();
         char name[32];
         std::snprintf(name, sizeof name, "story-%02d.json", story);
@@ -290,8 +360,7 @@ protected:
             // As `story` and `study` tell it: the story's timing (by default the natural preset).
             const signer::TimelineClip clip(
                 w.signer.rig(), stimuli::buildTimeline(parsed, v, w.sources(), stimuli::timelineOptionsFor(parsed.timing, 1.0)));
-            const signer::ClearanceSummary summary =
-                signer::checkClearance(clip.timeline(), signer::clearanceFrames(w.signer.rig(), clip));
+            const signer::ClearanceSummary summary = signer::checkClearance(clip.timeline(), frames(clip, everyRate));
             // The closest approaches, for the record (ctest -V).
             const auto show = [&](const signer::ClearanceExtreme& e) {
                 char text[160];
@@ -324,47 +393,60 @@ protected:
     }
 };
 
-// Transitions that still go deeper than their ends allow, each held at its depth (mm, to 0.5
-// mm; a transition not listed, or one going deeper, fails; remove a line when it is fixed).
-// Both appeared when the lexicon in the notation (issue 22) met transitions paced by the posed
-// path (issue 21), 2026-11-26:
-// - IX -> FORGET (story-01): the hand turns from pointing right to the palm on the forehead and
-//   its fingers graze the face at 3.70 s, between two instants of the routing grid (30 a second
-//   from the transition's start, so that the pacer, which routes a transition alone, and the
-//   clip route it alike); routed at 60 a second it clears, but the finer grid moves other
-//   transitions (IX -> TELL in story-06 then goes 30 mm into the body), so it is left for the
-//   routing to judge between its instants.
-// - BOSS -> DAN (story-03): leaving BOSS's shoulder tap, 1.1 mm deeper than the tap itself.
-// Three more when signs in context were shortened (issue 21's pace work, signScale 0.5 -> 0.4,
-// 2026-11-26), 1-2 mm past their ends' depth: HOMEWORK -> TEACHER (story-01, -6.2 mm, -4.9
-// allowed), IX -> MEETING (story-03, -4.0, -3.0), NEW -> HOUSE (story-11, -6.8, -4.8). The
-// items' positions did not change, only when they are signed: a transition's closest approach
-// moves by ~1 mm when a story shifts by 10 ms (story-01 with restSeconds 0.5, 0.51, 0.52:
-// -0.3, 1.0, 1.5 mm at FRIEND -> TOM), so the touches settled and the transitions routed on
-// fixed grids of instants meet these margins by chance; IX -> FORGET clears at this timing.
-struct KnownTransition {
-    const char* before;
-    const char* after;
-    float deepestMm;
-};
-const KnownTransition kKnownTransitions[] = {{"IX", "FORGET", -7.0f},     {"BOSS", "DAN", -10.5f},
-                                             {"HOMEWORK", "TEACHER", -6.5f}, {"IX", "MEETING", -4.5f},
-                                             {"NEW", "HOUSE", -7.0f}};
+// Whether the arm solver's pose jumps within a millisecond of `seconds`: a hand's capsules
+// move farther than 20 m/s (8 times SPEC §6.2's peak) would take them between two instants
+// 1/1920 s apart — the solver switching between two solutions of nearly the same target. No
+// route goes around such a jump; it is the solver's to remove (issue 21 §1: an elbow chosen by
+// a rule of the target; the disabled MotionLimits tests).
+namespace {
+bool armSolutionJumpsNear(const signer::TimelineClip& clip, double seconds) {
+    const signer::SignerRig& rig = world().signer.rig();
+    const auto capsulesAt = [&](double t) {
+        const signer::SignerPosture posture = clip.postureAt(t);
+        signer::PoseReport report;
+        report.right = rig.solveArm(hand::Side::Right, posture);
+        report.left = rig.solveArm(hand::Side::Left, posture);
+        return signer::signerCapsules(rig, posture, report);
+    };
+    constexpr double kStep = 1.0 / 1920.0;
+    signer::SignerCapsules before = capsulesAt(seconds - 2 * kStep);
+    for (int k = -1; k <= 2; ++k) {
+        const signer::SignerCapsules after = capsulesAt(seconds + k * kStep);
+        for (const bool right : {true, false}) {
+            const std::vector<hand::Capsule>&a = right ? before.right : before.left, &b = right ? after.right : after.left;
+            for (std::size_t i = 0; i < a.size(); ++i)
+                if (std::max(glm::distance(a[i].start, b[i].start), glm::distance(a[i].end, b[i].end)) > 20000.0 * kStep)
+                    return true;
+        }
+        before = after;
+    }
+    return false;
+}
+}  // namespace
 
 TEST_P(StoryClearance, HandsNeverInterpenetrateAtTransitions) {
     // Neither each other nor the body, deeper than the items at the transition's ends have
-    // them (the issue: "no interpenetration of the hands at transitions").
-    const std::vector<Checked> checked = check(GetParam());
+    // them (the issue: "no interpenetration of the hands at transitions"), at every frame of
+    // every output rate: a transition is routed on instants of its own time and judged between
+    // them (signer/transition_route.cpp), so no rate's frames find it in the body. Not counted
+    // (but printed): a frame where the arm solver's pose jumps (armSolutionJumpsNear).
+    const std::vector<Checked> checked = check(GetParam(), true);
+    std::string jumps;
     const std::string found = violations(checked, [&](const signer::ClearanceViolation& v) {
         if (!v.transition) return false;
-        const stimuli::Timeline& t = checked.front().timeline;
-        if (v.before < 0 || v.after < 0) return true;
-        for (const KnownTransition& k : kKnownTransitions)
-            if (t.spans[static_cast<std::size_t>(v.before)].label.rfind(k.before, 0) == 0 &&
-                t.spans[static_cast<std::size_t>(v.after)].label.rfind(k.after, 0) == 0 && v.gapMm >= k.deepestMm)
-                return false;
+        for (const Checked& c : checked)
+            for (const signer::ClearanceViolation& w : c.summary.violations)
+                if (&w == &v && armSolutionJumpsNear(signer::TimelineClip(world().signer.rig(), c.timeline), v.seconds)) {
+                    char line[200];
+                    std::snprintf(line, sizeof line, "%s %s: %.1f mm at %.4f s, where the arm solver's pose jumps\n",
+                                  c.timeline.version.c_str(), signer::describeClearancePlace(c.timeline, v.before, v.after).c_str(),
+                                  v.gapMm, v.seconds);
+                    jumps += line;
+                    return false;
+                }
         return true;
     });
+    if (!jumps.empty()) std::printf("not counted:\n%s", jumps.c_str());
     EXPECT_TRUE(found.empty()) << found;
 }
 
