@@ -1,6 +1,7 @@
 #include "signer/timeline_clip.hpp"
 
 #include "signer/hand_capsules.hpp"
+#include "signer/settled_pace.hpp"
 #include "signer/signer.hpp"
 #include "signer/signer_pose.hpp"
 
@@ -182,8 +183,11 @@ void TimelineClip::settleTouches() {
             return closestApproach(capsules.right, capsules.left).gapMm;
         };
         std::vector<float> gaps;
+        std::vector<std::pair<glm::vec3, glm::vec3>> wrists;  // the posed wrists (right, left), unsettled
         std::size_t deepest = 0;
         for (std::size_t i = 0; i < times.size(); ++i) {
+            const PoseReport posed = arms(straight[i]);
+            wrists.emplace_back(posed.right.wristMm, posed.left.wristMm);
             gaps.push_back(gapWith(i, glm::vec3(0.0f), 0.0f));
             if (gaps[i] < gaps[deepest]) deepest = i;
         }
@@ -246,14 +250,24 @@ void TimelineClip::settleTouches() {
             }
         }
         if (best.empty()) continue;
-        // The way out grows and shrinks no faster than kTouchRateMmPerSecond: each instant
-        // moves out as far as any other needs, less that rate times the time between them
-        // (an envelope, never less than an instant's own need).
-        std::vector<float> envelope = best;
-        for (std::size_t i = 0; i < times.size(); ++i)
-            for (std::size_t j = 0; j < times.size(); ++j)
-                envelope[i] = std::max(envelope[i], best[j] - static_cast<float>(kTouchRateMmPerSecond * std::abs(times[i] - times[j])));
-        best = envelope;
+        // The way out grows and shrinks no faster than kTouchRateMmPerSecond, and only as fast
+        // as the headroom the wrists' own motion leaves under kSettledPeakSpeedMmPerSecond
+        // (signer/settled_pace.hpp): each instant moves out as far as any other needs, less
+        // what the rates allow between them (never less than an instant's own need).
+        std::vector<RateBounds> bounds;
+        for (std::size_t i = 0; i + 1 < times.size(); ++i) {
+            RateBounds b{-kTouchRateMmPerSecond, kTouchRateMmPerSecond};
+            const double dt = times[i + 1] - times[i];
+            for (const bool r : {true, false}) {
+                const glm::dvec3 velocity = glm::dvec3((r ? wrists[i + 1].first : wrists[i + 1].second) -
+                                                       (r ? wrists[i].first : wrists[i].second)) / dt;
+                const RateBounds hand = offsetRateBounds(velocity, glm::dvec3(chosen * (r ? rightShare : rightShare - 1.0f)),
+                                                         kSettledPeakSpeedMmPerSecond);
+                b = {std::max(b.lo, hand.lo), std::min(b.hi, hand.hi)};
+            }
+            bounds.push_back(b);
+        }
+        best = rateLimitedEnvelope(times, best, bounds);
         for (std::size_t i = 0; i < times.size(); ++i) {
             settled.right.push_back(rightShare * best[i] * chosen);
             settled.left.push_back(-(1.0f - rightShare) * best[i] * chosen);
@@ -264,6 +278,7 @@ void TimelineClip::settleTouches() {
         for (const std::size_t k : left) leftTouch_[k] = settled.at(timeline_.left[k].timeSeconds, false);
         touchSpans_.push_back(std::move(settled));
     }
+    blendTouches();
 }
 
 glm::vec3 TimelineClip::TouchSpan::at(double seconds, bool rightHand) const {

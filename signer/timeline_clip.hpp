@@ -38,9 +38,14 @@
 // (settleTouches): where the hands' capsules overlap deeper than kTouchDepthMm, the hand that
 // moves in the item (both, half each, when both or neither do) is moved out along the line
 // between the closest points until they meet at that depth. The offsets depend on the
-// timeline alone (the pose stays a function of it and t); the transitions blend them in and
-// out with the keys; an instant that touches still touches, one clear of the other hand is
-// left alone.
+// timeline alone (the pose stays a function of it and t); an instant that touches still
+// touches, one clear of the other hand is left alone. They change only within the headroom
+// the wrists' own motion leaves under kSettledPeakSpeedMmPerSecond (signer/settled_pace.hpp),
+// so that settling makes no wrist faster than SPEC §6.2 allows: inside the item (as slowly as
+// kTouchRateMmPerSecond at most), and in the transitions into and out of it (blendTouches,
+// signer/touch_blend.cpp: with the keys' blend where the headroom allows, and keeping a hand
+// that comes to or leaves the other from passing deeper on the way where its offset can). The
+// pacer (transitionPacer) times a transition into a touching item with the item settled.
 #include "signer/clip.hpp"
 #include "stimuli/story/timeline.hpp"
 #include "stimuli/story/timeline_builder.hpp"
@@ -87,13 +92,15 @@ private:
     Detour routeTransition(double startSeconds, double endSeconds) const;
     static float bumpAt(int shape, double u);
     void settleTouches();
+    void blendTouches();  // settleTouches' offsets into and out of the settled items
 
     const SignerRig* rig_;
     stimuli::Timeline timeline_;
     std::vector<Detour> detours_;  // in time order
     std::vector<glm::vec3> rightElbows_, leftElbows_;  // per key of each track: the solver's elbow there
     std::vector<glm::vec3> rightTouch_, leftTouch_;    // per key of each track: its wrist's settling offset (body frame, mm)
-    // An item whose touch is settled: the wrists' offsets at its instants (body frame, mm).
+    // An item whose touch is settled, or a transition into or out of one (blendTouches): the
+    // wrists' offsets at its instants (body frame, mm).
     struct TouchSpan {
         double startSeconds = 0.0, endSeconds = 0.0;
         std::vector<double> times;
@@ -116,9 +123,18 @@ inline constexpr float kTouchDepthMm = 2.0f;
 // from key to key can pass through each other where the keys do not (a hand turning over,
 // fingers opening).
 inline constexpr double kTouchFramesPerSecond = 60.0;
-// [D] How fast a settled touch's offset may grow or shrink: 0.3 m/s, an eighth of SPEC §6.2's
-// 2.5 m/s peak wrist speed, so that settling does not make a sign's wrist faster than human.
+// [D] How fast a settled touch's offset may grow or shrink at most: 0.3 m/s, an eighth of SPEC
+// §6.2's 2.5 m/s peak wrist speed (a hand seen to slide out of the other, not to jump).
 inline constexpr double kTouchRateMmPerSecond = 300.0;
+// SPEC §6.2: 2.5 m/s peak wrist speed, less the timing's margin (TimelineOptions::
+// peakSpeedMmPerSecond, 2.45 m/s, to which the pacer times the keys' path). A settled touch's
+// offsets change only within the headroom the wrist's own motion leaves under it
+// (signer/settled_pace.hpp), inside the item and in the transitions into and out of it.
+inline constexpr double kSettledPeakSpeedMmPerSecond = 2450.0;
+// [D] The transitions into and out of a settled touch blend its offsets on a grid of this many
+// instants per second of the timeline's own time from the transition's start (as the pacer
+// samples the wrists: finer than any output's frames, so no frame falls between two peaks).
+inline constexpr double kTouchBlendFramesPerSecond = 240.0;
 // [D] A transition's clearance is checked at this many instants per second from its start (a
 // grid of the timeline's own time, not of any output's frames: the detour, like every pose,
 // depends on the timeline alone; and on the transition alone, not where it falls), and
@@ -133,7 +149,9 @@ inline constexpr double kHeadPeakDegPerSecond = 250.0;
 
 // The timeline builder's pacer of transitions (stimuli::TransitionPacer; issue 21, SPEC §6.2):
 // the transition of the query played as a TimelineClip of its two ends — straight blend,
-// routed around the hands and the body exactly as in a story — and its drawn wrists' peak
+// routed around the hands and the body exactly as in a story, each end held an instant as a
+// touch that is settled where its hands overlap, and the item after it played settled where
+// the query gives it (TransitionQuery::intoTouch) — and its drawn wrists' peak
 // speed measured (the arm solution's, every 1/240 s); while it peaks above the query's
 // limit the transition is lengthened in proportion (at least 5 % a step, at most
 // kPacerSteps steps) and routed again, since a longer transition allows a gentler detour;

@@ -22,26 +22,60 @@ double pacedTransitionSeconds(const SignerRig& rig, const stimuli::TransitionQue
     // and the last too fast, halving the gap this many times (to ~1 % of the step).
     constexpr int kBisections = 4;
     if (!(query.seconds > 0.0) || !(query.peakSpeedMmPerSecond > 0.0)) return query.seconds;
+    // Between items, each end is held for an instant as an item of its own that touches with
+    // both hands: where its hands overlap deeper than kTouchDepthMm, the clip settles it
+    // (TimelineClip::settleTouches) as it settles the touching item in a story, so the
+    // transition is timed from and to where the hands are drawn, with the offsets blended in
+    // and out and the detour that keeps a settled touch from going deeper (a hand that leaves
+    // the other's palm). Where the ends do not overlap, the holds change nothing.
+    // Into an item that touches (query.intoTouch), the item itself follows, settled as in a
+    // story, so the transition ends where its touch is drawn (its offsets at its first key
+    // come from its deepest instants, not that key's alone).
+    const double hold = query.insideItem ? 0.0 : 1.0 / kTouchFramesPerSecond;
+    double itemSeconds = 0.0;
+    for (const std::vector<stimuli::TimelineKey>& keys : query.intoTouch)
+        if (!keys.empty()) itemSeconds = std::max(itemSeconds, keys.back().timeSeconds);
+    const bool intoItem = !query.insideItem && itemSeconds > 0.0;
     // The transition's drawn wrists' peak speed when it lasts `seconds`.
     const auto peakAt = [&](double seconds) {
         stimuli::Timeline timeline;
         for (std::size_t h = 0; h < 2; ++h) {
             std::vector<stimuli::TimelineKey>& track = h == 0 ? timeline.right : timeline.left;
             track = {query.from[h], query.to[h]};
-            track[0].timeSeconds = 0.0;
-            track[1].timeSeconds = seconds;
+            track[0].timeSeconds = hold;
+            track[1].timeSeconds = hold + seconds;
             track[0].passThrough = track[1].passThrough = false;
+            if (hold > 0.0) {
+                track.insert(track.begin(), track.front());
+                track.front().timeSeconds = 0.0;
+                track.pop_back();
+                if (intoItem && !query.intoTouch[h].empty())
+                    for (const stimuli::TimelineKey& k : query.intoTouch[h]) {
+                        track.push_back(k);
+                        track.back().timeSeconds = hold + seconds + k.timeSeconds;
+                    }
+                else
+                    for (const double at : {hold + seconds, hold + seconds + std::max(hold, itemSeconds)}) {
+                        track.push_back(query.to[h]);
+                        track.back().timeSeconds = at;
+                        track.back().passThrough = false;
+                    }
+            }
         }
-        timeline.durationSeconds = seconds;
+        const double end = hold + seconds + std::max(hold, itemSeconds);
+        timeline.durationSeconds = query.insideItem ? seconds : end;
         // Inside an item the clip routes nothing (TimelineClip routes only between items).
         if (query.insideItem)
             timeline.spans.push_back({stimuli::SpanKind::Verb, 0.0, seconds, "", 0, 0, 0.0, seconds, {}, 0});
+        else
+            for (const auto& [start, stop] : {std::pair{0.0, hold}, std::pair{hold + seconds, end}})
+                timeline.spans.push_back({stimuli::SpanKind::Sign, start, stop, "", 0, 0, start, stop, {true, false}, 0});
         const TimelineClip clip(rig, std::move(timeline));
         const auto samples = static_cast<int>(std::ceil(seconds * kSamplesPerSecond));
         double peak = 0.0;
         glm::vec3 right(0.0f), left(0.0f);
         for (int i = 0; i <= samples; ++i) {
-            const SignerPosture posture = clip.postureAt(seconds * i / samples);
+            const SignerPosture posture = clip.postureAt(hold + seconds * i / samples);
             const glm::vec3 r = rig.reachedWristMm(hand::Side::Right, posture);
             const glm::vec3 l = rig.reachedWristMm(hand::Side::Left, posture);
             if (i > 0) peak = std::max(peak, std::max(glm::distance(r, right), glm::distance(l, left)) * samples / seconds);
@@ -95,6 +129,17 @@ stimuli::TransitionPacer pacerOf(const SignerRig* rig, std::shared_ptr<const voi
                 key += k.handshape;
                 key += '\0';
             }
+        for (const std::vector<stimuli::TimelineKey>& keys : query.intoTouch) {
+            key += 'k';
+            for (const stimuli::TimelineKey& k : keys) {
+                const double values[] = {k.timeSeconds, k.rest ? 1.0 : 0.0, k.passThrough ? 1.0 : 0.0,
+                                         k.pose.positionMm.x, k.pose.positionMm.y, k.pose.positionMm.z,
+                                         k.pose.orientation.w, k.pose.orientation.x, k.pose.orientation.y, k.pose.orientation.z};
+                add(values, sizeof values);
+                key += k.handshape;
+                key += '\0';
+            }
+        }
         // Controls with fields the key does not list (hand/hand_model.hpp changed): this
         // pacer's answers are not shared.
         constexpr bool kControlsKeyed = sizeof(hand::HandControls) == sizeof(float) * (4 + 3 * hand::kFingerCount);

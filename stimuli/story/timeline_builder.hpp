@@ -137,6 +137,11 @@ struct TransitionQuery {
     // A stretch inside an item (a verb's path between two of its keys), which the signer does
     // not route around the hands and the body: timed on its straight blend, posed.
     bool insideItem = false;
+    // Where the transition goes into an item that touches with both hands (SignContact::hands):
+    // that item's keys ([0] right, [1] left; from its first, at its own times, controls
+    // resolved), so that a pacer can time the transition to where the signer settles the touch
+    // (signer/timeline_clip.hpp, settleTouches). Empty otherwise.
+    std::array<std::vector<TimelineKey>, 2> intoTouch;
 };
 // How long the transition must last so that the path the hands actually take — around each
 // other and the body, which a straight blend of the keys does not know (the signer's

@@ -263,18 +263,17 @@ TEST(MotionLimits, DISABLED_EveryStoryFrameKeepsItsWristsAndElbowsWithinTheBodys
     expectWristsWithinClinicalRanges(peaks);
 }
 
-// SPEC §6.2 on the path the wrists actually travel, detours included. Before the timeline's
-// transitions were paced by the signer's path (signer::transitionPacer), the clearance
-// detours TimelineClip adds took the wrists to 3.42 m/s (story-10 point at 13.25 s, BOSS ->
-// NICE: 230 mm forward within 0.1 s of a 0.375 s transition), 3.15 (story-06 at 11.0 s) and
-// 3.14 (story-09 at 8.68 s); measured 2026-11-26. Paced, they peaked at 2.45 m/s; then the
-// touches came to the surface (TimelineClip::settleTouches), whose offsets may add up to
-// kTouchRateMmPerSecond (0.3 m/s) to a wrist the pacer timed without them (the pacer routes a
-// transition or a verb path alone, with no settled touch): 2.77 m/s at story-03 uninflected
-// t=4.017 s, in EMAIL, whose right hand the settling pushes out of the left C (measured
-// 2026-11-26 after merging both). Fails until the pacer sees the settling.
-// Run with --gtest_also_run_disabled_tests.
-TEST(MotionLimits, DISABLED_NoWristFasterThanSpec62) {
+// SPEC §6.2 on the path the wrists actually travel, detours and settled touches included.
+// Before the timeline's transitions were paced by the signer's path (signer::transitionPacer),
+// the clearance detours TimelineClip adds took the wrists to 3.42 m/s (story-10 point at
+// 13.25 s, BOSS -> NICE: 230 mm forward within 0.1 s of a 0.375 s transition), 3.15 (story-06
+// at 11.0 s) and 3.14 (story-09 at 8.68 s); measured 2026-11-26. Paced, they peaked at 2.45 m/s;
+// then the touches came to the surface (TimelineClip::settleTouches), whose offsets the pacer
+// did not see: 2.77 m/s at story-03 uninflected t=4.017 s (into EMAIL), 2.72 in story-01 at
+// 14.33 s (out of HOMEWORK). Now a settled touch's offsets change only within the headroom
+// the wrists' own motion leaves (signer/settled_pace.hpp), and the pacer times a transition
+// to and from the settled touch (TransitionQuery::intoTouch): 2.46 m/s (measured 2026-11-26).
+TEST(MotionLimits, NoWristFasterThanSpec62) {
     const Fixture& f = fixture();
     motion::MotionPeaks peaks;
     for (std::size_t i = 0; i < f.clips.size(); ++i) motion::measureClip(f.signer.rig(), *f.clips[i], f.names[i], 60.0, peaks);
