@@ -163,7 +163,8 @@ TEST(Touch, ATouchAtTheSurfaceAndASignThatDoesNotTouchAreLeftAlone) {
 
 // Signs of the default lexicon that do not yet keep the rule alone in citation form, each held
 // at what it does now (mm, to 0.5 mm); remove a line when the sign's data is fixed (LOSE, MORE,
-// NICE, MORNING, WHEN and AGAIN were, 2026-11-26: MORE's flat-O fingertips now lead and meet).
+// NICE, MORNING, WHEN, AGAIN and TABLE were, 2026-11-26: MORE's flat-O fingertips now lead
+// and meet; TABLE's left forearm rises toward the wrist as the posed one does).
 struct KnownSign {
     const char* sign;
     float gapMm;
@@ -182,7 +183,7 @@ const KnownSign kSinksIn[] = {{"HOW", -21.5f}, {"MARRY", -15.5f}};
 // turned 40-95 degrees from the notation's orientation at its wrist's limits, and the
 // notation's arm is a straight forearm along the base hand's axis, not the arm the rig poses
 // (data: orientations the arms reach, places on the posed arm).
-const KnownSign kNeverReach[] = {{"SON", 38.0f}, {"DAUGHTER", 33.5f}, {"BABY", 17.0f}, {"TABLE", 26.5f}};
+const KnownSign kNeverReach[] = {{"SON", 38.0f}, {"DAUGHTER", 33.5f}, {"BABY", 17.0f}};
 
 TEST(Touch, EveryLexiconSignThatTouchesWithBothHandsComesToTheSurfaceAlone) {
     // Each sign alone in citation form, as `signstim sign GLOSS` signs it (rests of 0.3 s,
