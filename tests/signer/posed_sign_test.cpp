@@ -29,7 +29,7 @@ struct KnownPosed {
 };
 const KnownPosed kKnownPosed[] = {
     {"COFFEE", 11.4, 0}, {"SORRY", 0.0, 22}, {"GIRL", 40.1, 0},
-    {"SISTER", 68.4, 48}, {"FEEL", 11.2, 0}, {"HOUSE", 0.0, 47}, {"BOOK", 14.7, 0},
+    {"SISTER", 68.4, 48}, {"HOUSE", 0.0, 47}, {"BOOK", 14.7, 0},
     {"CAKE", 24.1, 0}, {"COOK", 0.0, 96}, {"BROTHER", 29.8, 33}, {"HUSBAND", 68.2, 0}, {"BEST", 0.0, 62},
     {"FORGET", 12.6, 68}, {"CLASS", 0.0, 26}, {"LETTER", 13.9, 0}, {"LOSE", 52.5, 0}, {"NEIGHBOR", 24.1, 0},
     {"PICTURE", 33.6, 26}, {"POLICE", 11.4, 0}, {"PRACTICE", 54.5, 37}, {"RECIPE", 28.1, 38}, {"STUDY", 0.0, 35},
