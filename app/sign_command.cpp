@@ -1,9 +1,11 @@
 // `signstim sign GLOSS`: one lexicon sign alone (issue 22 §4): what it is, the ASL-LEX code it
-// claims and the results of its checks (stimuli/story/sign_notation_check.hpp); with --out, the
+// claims and the results of its checks (stimuli/story/sign_notation_check.hpp), on the hands as
+// the signer's arm solution poses them too (contacts reached, orientation kept); with --out, the
 // signer signing it in citation form, as a clip or as a contact sheet of its frames.
 #include "app/cli_values.hpp"
 #include "app/clip_output.hpp"
 #include "app/commands.hpp"
+#include "app/sign_alone.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "renderer/contact_sheet.hpp"
@@ -31,12 +33,9 @@ struct SignOptions {
     bool quiet = false;
 };
 
-// [D] A sign is shown between short rests, in citation form (rate 1, not shortened for a
-// story: TimelineOptions::signScale 1).
-constexpr double kRestSeconds = 0.3;
-
-// What the sign is and whether it realizes what it claims; true when every check passes.
-bool report(const StoryWorld& world, const LexiconSign& sign) {
+// What the sign is and whether it realizes what it claims, on the posed hands too; true when
+// every check passes.
+bool report(const StoryWorld& world, const LexiconSign& sign, const PosedHands& posed) {
     std::printf("%s (%s:%d): %s\n", sign.gloss.c_str(), sign.file.c_str(), sign.line, sign.meaning.c_str());
     std::printf("  %zu hand%s, %.3f s in citation form\n", sign.hands.size(), sign.hands.size() == 1 ? "" : "s",
                 sign.durationSeconds() * sign.passes);
@@ -55,30 +54,16 @@ bool report(const StoryWorld& world, const LexiconSign& sign) {
                     p.variant.empty() ? "" : ", variant: ", p.variant.c_str(), p.source.empty() ? "" : (", source: " + p.source).c_str(),
                     p.durationMs);
     bool ok = true;
-    for (const NotationCheck& c : checkSignNotation(sign, world.lexicon, world.shapes, world.handModel)) {
+    for (const NotationCheck& c : checkSignNotation(sign, world.lexicon, world.shapes, world.handModel, posed)) {
         std::printf("  %s %s: %s\n", c.ok ? "ok  " : "FAIL", c.name.c_str(), c.detail.c_str());
         ok = ok && c.ok;
     }
     return ok;
 }
 
-void renderSign(const SignOptions& o, const StoryWorld& world, const LexiconSign& sign) {
+void renderSign(const SignOptions& o, const signer::Signer& signer, const signer::TimelineClip& clip, const LexiconSign& sign) {
     const ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
     if (output.kind == render::OutputKind::Folder) throw commandLineError("--out", "give FILE.png (a contact sheet) or FILE.mp4");
-    Story story;
-    story.file = "sign " + sign.gloss;
-    StorySentence sentence;
-    StoryItem item;
-    item.kind = StoryItemKind::Sign;
-    item.gloss = sign.gloss;
-    sentence.gloss = sign.gloss;
-    sentence.items.push_back(item);
-    story.sentences.push_back(sentence);
-    TimelineOptions timing;
-    timing.signScale = 1.0;
-    timing.restSeconds = kRestSeconds;
-    const signer::Signer signer(world.scenes);
-    const signer::TimelineClip clip(signer.rig(), buildTimeline(story, VerbVersion::Point, world.sources(story), timing));
     double start = 0.0, from = 0.0, to = clip.durationSeconds();
     for (const TimelineSpan& span : clip.timeline().spans)
         if (span.kind == SpanKind::Sign) start = span.keysStartSeconds, from = span.startSeconds, to = span.keysEndSeconds + 0.1;
@@ -94,8 +79,8 @@ void renderSign(const SignOptions& o, const StoryWorld& world, const LexiconSign
     const int handle = renderer.addScene(signer.avatar());
     signer::ClipRenderOptions options;
     options.framesPerSecond = output.frameRate.value();
-    std::vector<double> contacts;  // clip time: the sign's own keys start at `start`
-    for (const ContactEvent& e : sign.contactEvents) contacts.push_back(start + e.timeSeconds);
+    std::vector<double> contacts;  // clip time
+    for (const ContactEvent& e : sign.contactEvents) contacts.push_back(clipSeconds(clip, sign, e.timeSeconds));
     render::ContactSheetSink sink(options.framesPerSecond, from, to, contacts);
     signer::renderClips(renderer, handle, signer.avatar(), signer.rig(), {&clip}, {}, options, sink);
     const std::size_t frames = sink.kept();
@@ -113,8 +98,9 @@ void registerSignCommand(Commands& commands) {
     CLI::App* sign = commands.root.add_subcommand(
         "sign",
         "One sign of the lexicon alone (docs/lexicon.md): its place, the ASL-LEX 2.0 code it claims and\n"
-        "the results of its checks (exit 2 when one fails); with --out, the signer signing it in citation\n"
-        "form as a clip or a contact sheet of its frames.\n"
+        "the results of its checks, on the hands as the signer's arms pose them too (exit 2 when one\n"
+        "fails); with --out, the signer signing it in citation form as a clip or a contact sheet of\n"
+        "its frames.\n"
         "Examples:\n"
         "  signstim sign MOTHER\n"
         "  signstim sign LIBRARY --out library.png\n"
@@ -131,9 +117,9 @@ void registerSignCommand(Commands& commands) {
     sign->add_flag("--quiet", o->quiet, "No progress on stderr");
     sign->callback([o] {
         StoryWorld pacedWorld(o->scenesDir, o->lexicon);
+        const auto signer = std::make_shared<const signer::Signer>(pacedWorld.scenes);
         // Issue 21: transitions paced by the path the signer's hands take, as in a story.
-        pacedWorld.transitionPacer =
-            signer::transitionPacer(std::make_shared<const signer::Signer>(pacedWorld.scenes));
+        pacedWorld.transitionPacer = signer::transitionPacer(signer);
         const StoryWorld& world = pacedWorld;
         const LexiconSign* found = world.lexicon.find(o->gloss);
         if (!found) {
@@ -141,9 +127,10 @@ void registerSignCommand(Commands& commands) {
             for (const std::string& g : world.lexicon.glosses()) known += (known.empty() ? "" : " ") + g;
             throw InputError(world.lexicon.file, 0, "GLOSS", "no sign " + o->gloss + " in the lexicon (signs: " + known + ")");
         }
-        const bool ok = report(world, *found);
+        const signer::TimelineClip clip = signAlone(world, *signer, *found);
+        const bool ok = report(world, *found, posedHands(*signer, clip, *found));
         std::fflush(stdout);
-        if (!o->outPath.empty()) renderSign(*o, world, *found);
+        if (!o->outPath.empty()) renderSign(*o, *signer, clip, *found);
         if (!ok) throw InputError(found->file, found->line, "notation", found->gloss + " does not realize the code it claims (FAIL above)");
     });
 }

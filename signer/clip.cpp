@@ -44,6 +44,16 @@ hand::ArmTarget armTargetFromSigningSpace(const stimuli::HandPose& pose) {
     return target;
 }
 
+stimuli::HandPose signingSpaceFromArm(const glm::vec3& wristMm, const glm::quat& handRotation) {
+    // handFrameFromSigningSpace is S·R·F with S and F their own inverses: R = S·M·F.
+    const glm::mat3 s(glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1));
+    const glm::mat3 flipY(glm::vec3(1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, 1));
+    stimuli::HandPose pose;
+    pose.positionMm = glm::dvec3(bodyFromSigningSpace(wristMm));  // the mirror is its own inverse
+    pose.orientation = glm::dquat(glm::normalize(glm::quat_cast(s * glm::mat3_cast(handRotation) * flipY)));
+    return pose;
+}
+
 render::Pose ClipPoser::next(double seconds, SignerPosture* posture, PoseReport* report) const {
     const SignerPosture wanted = clip_->postureAt(seconds);
     render::Pose pose = rig_->pose(wanted, report);

@@ -36,6 +36,10 @@ private:
 
 // Hand pose of the signing-space frame (SPEC §3.1) -> arm target in the body frame.
 hand::ArmTarget armTargetFromSigningSpace(const stimuli::HandPose& pose);
+// Its inverse: a wrist and hand frame of the body frame (where the arm solution put the hand,
+// hand::ArmPose::wristMm and hand) as a hand pose of the signing-space frame, so that what a
+// sign asks can be judged on the hand as posed (`signstim sign`, issue 22).
+stimuli::HandPose signingSpaceFromArm(const glm::vec3& wristMm, const glm::quat& handRotation);
 
 // [D] A hand that takes no part in what is signed hangs relaxed: fingers gently curled, more
 // so toward the little finger, thumb resting beside the index (not the flat bind pose).

@@ -20,6 +20,8 @@ namespace {
 constexpr double kAtPlaceMm = 60.0, kNearMm = 150.0;
 // [D] The check samples the motion at 240 Hz (8 samples a 30 fps frame).
 constexpr double kSampleSeconds = 1.0 / 240.0;
+// [D] The posed hands are sampled at 60 Hz (each sample is an arm solution, not a blend).
+constexpr double kPosedSampleSeconds = 1.0 / 60.0;
 // [D] A repetition returns to its stroke's end within 3 mm, having left it by 8 mm or more.
 constexpr double kVisitMm = 3.0, kLeaveMm = 8.0;
 // [D] The two hands of a two-handed sign that does not touch stay this far apart (palm centres).
@@ -96,6 +98,75 @@ bool unmarkedHandshape(const std::string& label) {
 
 bool differs(const NotationProvenance& p, const std::string& field) {
     return std::find(p.differs.begin(), p.differs.end(), field) != p.differs.end();
+}
+
+
+// The arm's places (a point of handPointMm's straight forearm, in the palm frame: along -z from
+// the wrist, x palmar) on a posed arm: along its own forearm, from the elbow to the wrist, with
+// the palmar side the hand's palmar side turned square to it (the forearm carries the hand's
+// pronation; the wrist flexes the hand, not the forearm, off its line).
+HandPose posedForearm(const PosedHand& posed) {
+    HandPose frame = posed.pose;
+    const glm::dvec3 along = posed.pose.positionMm - posed.elbowMm;
+    if (glm::length(along) < 1.0) return frame;
+    const glm::dvec3 z = glm::normalize(along);
+    const glm::dvec3 palmar = posed.pose.orientation * glm::dvec3(1, 0, 0);
+    const glm::dvec3 x = palmar - glm::dot(palmar, z) * z;
+    if (glm::length(x) < 1e-6) return frame;
+    frame.orientation = orientationFromFingersPalm(z, glm::normalize(x));
+    return frame;
+}
+
+// The checks on the posed hands (checkSignNotation with PosedHands): contact events at their
+// moment, and each hand's turn from the notation's orientation.
+void addPosedChecks(const LexiconSign& sign, const Lexicon& lexicon, const std::vector<std::vector<TimelineKey>>& tracks,
+                    const hand::HandModel& model, const PosedHands& posed, std::vector<NotationCheck>& checks) {
+    const auto sideOf = [&](std::size_t h) { return h == 0 ? hand::Side::Right : hand::Side::Left; };
+    int index = 0;
+    for (const ContactEvent& e : sign.contactEvents) {
+        ++index;
+        const std::string name = "posed contact " + std::to_string(index) + " " + e.by + " at " + e.at;
+        const std::size_t h = static_cast<std::size_t>(e.hand);
+        const std::optional<PosedHand> by = posed(sideOf(h), e.timeSeconds);
+        std::optional<glm::dvec3> target;
+        if (e.at.rfind("hand:", 0) == 0 || e.at.rfind("arm:", 0) == 0) {
+            const std::optional<PosedHand> other = tracks.size() < 2 ? std::nullopt : posed(hand::Side::Left, e.timeSeconds);
+            if (other) {
+                const bool arm = e.at.rfind("arm:", 0) == 0;
+                const std::string point = e.at.substr(e.at.find(':') + 1);
+                target = handPointInSpace(arm ? posedForearm(*other) : other->pose,
+                                          handPointMm(model, sampleAt(tracks.back(), e.timeSeconds).controls, hand::Side::Left, point)
+                                              .value_or(glm::dvec3(0.0)));
+            }
+        } else if (const auto found = lexicon.locations.find(e.at); found != lexicon.locations.end()) {
+            target = found->second;
+        }
+        if (!by || !target) {
+            checks.push_back({name, false, "no posed hand or place"});
+            continue;
+        }
+        *target += e.offsetMm;
+        const glm::dvec3 point = handPointInSpace(
+            by->pose, handPointMm(model, sampleAt(tracks[h], e.timeSeconds).controls, sideOf(h), e.by).value_or(glm::dvec3(0.0)));
+        const double gap = glm::distance(*target, point);
+        checks.push_back({name, gap <= kContactReachedMm, format("%.1f mm at ", gap) + format("%.3f s", e.timeSeconds)});
+    }
+    // Each hand's posed orientation against the one its motion asks, every sample of the sign's
+    // keys (the motion's own: between two keys half a turn apart the notation's interpolation is
+    // ambiguous, and the signer's is the one seen).
+    const double total = sign.durationSeconds();
+    for (std::size_t h = 0; h < tracks.size(); ++h) {
+        double worst = 0.0, when = 0.0;
+        for (double t = 0.0; t <= total + 1e-9; t += kPosedSampleSeconds) {
+            const std::optional<PosedHand> p = posed(sideOf(h), t);
+            if (!p) continue;
+            const double deg = p->orientationErrorDeg;
+            if (deg > worst) worst = deg, when = t;
+        }
+        checks.push_back({std::string("posed orientation, ") + (h == 0 ? "right" : "left") + " hand", worst <= kPosedOrientationDeg,
+                          format("%.0f degrees from the asked orientation at worst, ", worst) + format("at %.3f s", when) +
+                              format(" (at most %.0f)", kPosedOrientationDeg)});
+    }
 }
 
 }  // namespace
@@ -185,7 +256,7 @@ std::string describeAslLexCode(const AslLexCode& c) {
 }
 
 std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexicon& lexicon, const HandshapeLibrary& shapes,
-                                             const hand::HandModel& model) {
+                                             const hand::HandModel& model, const PosedHands& posed) {
     std::vector<NotationCheck> checks;
     if (!sign.notation) return checks;
     const SignNotation& n = *sign.notation;
@@ -420,6 +491,7 @@ std::vector<NotationCheck> checkSignNotation(const LexiconSign& sign, const Lexi
             add("hands rigid", drift < 0.5, format("the left hand moves %.2f mm in the right hand's frame at worst", drift));
         }
     }
+    if (posed) addPosedChecks(sign, lexicon, tracks, model, posed, checks);
     std::string relations;
     for (const NotationPart& p : n.parts) relations += (relations.empty() ? "" : ", ") + toString(p.hands);
     add("hands", static_cast<int>(sign.hands.size()) == (n.twoHanded() ? 2 : 1), std::to_string(sign.hands.size()) + " (" + relations + ")");

@@ -28,6 +28,9 @@ TEST(SignCli, PrintsTheClaimedCodeTheEntryAndEveryCheck) {
     EXPECT_NE(r.output.find("follows ASL-LEX 2.0 entry 'mother'"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("ok   contact 2 thumb-tip at chin"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("ok   repetitions: 2"), std::string::npos) << r.output;
+    // Judged on the hands as posed too (issue 22: the hand the viewer sees).
+    EXPECT_NE(r.output.find("ok   posed contact 2 thumb-tip at chin"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("ok   posed orientation, right hand"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("FAIL"), std::string::npos) << r.output;
     // Every default sign is in the notation (issue 22); a lab's own sign may still be keyframes
     // (synthetic: one still key).

@@ -1,0 +1,91 @@
+// Issue 22: every lexicon sign realizes its claimed code — judged on the hands as the signer's
+// arms pose them (app/sign_alone.hpp, as `signstim sign GLOSS` judges them): each contact event
+// reached within kContactReachedMm by the posed hand at its moment, and each posed hand within
+// kPosedOrientationDeg of the orientation its motion asks. The requested pose alone is judged by
+// tests/stimuli/sign_notation_test.cpp; a wrist at its limits, or a touch settled to the surface
+// (signer/timeline_clip.hpp), can leave the posed hand short of what the notation reaches.
+#include "app/sign_alone.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+using namespace signstim;
+
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR) / "scenes";
+
+// Signs of the default lexicon whose posed hands do not yet keep the rule, each held at what
+// it does now (the posed contact's worst distance, mm; the posed hand's worst turn from the
+// asked orientation, degrees; 0 where that part keeps the rule); remove a line when the sign's
+// data is fixed. Measured with `signstim sign GLOSS` (its "posed" lines).
+struct KnownPosed {
+    const char* sign;
+    double contactMm, orientationDeg;
+};
+const KnownPosed kKnownPosed[] = {
+    {"COFFEE", 11.4, 0}, {"SORRY", 0.0, 22}, {"GIRL", 40.1, 0},
+    {"SISTER", 68.4, 48}, {"HOUSE", 0.0, 47}, {"BOOK", 14.7, 0},
+    {"CAKE", 24.1, 0}, {"COOK", 0.0, 96}, {"BROTHER", 29.8, 33}, {"HUSBAND", 68.2, 0}, {"BEST", 0.0, 62},
+    {"FORGET", 12.6, 68}, {"CLASS", 0.0, 26}, {"LETTER", 13.9, 0}, {"LOSE", 52.5, 0}, {"NEIGHBOR", 24.1, 0},
+    {"PICTURE", 33.6, 26}, {"POLICE", 11.4, 0}, {"PRACTICE", 54.5, 37}, {"RECIPE", 28.1, 38}, {"STUDY", 0.0, 35},
+    {"TEACHER", 0.0, 49}, {"YESTERDAY", 39.0, 0}, {"HOW", 52.0, 0}, {"FAMILY", 45.7, 0}, {"DEAF", 43.9, 0},
+    {"REMEMBER", 50.2, 38}, {"SON", 165.1, 79}, {"DAUGHTER", 165.1, 94}, {"WIFE", 64.0, 0}, {"BELIEVE", 64.0, 0},
+    {"SOON", 79.3, 63}, {"RIGHT", 0.0, 20}, {"HARD", 42.8, 0}, {"IMPORTANT", 30.2, 0}, {"YEAR", 18.6, 0},
+    {"BABY", 182.0, 41}, {"INTERPRETER", 12.3, 0}, {"READY", 0.0, 30}, {"CHANGE", 86.8, 54},
+    {"DOOR", 59.8, 55}, {"HOT", 0.0, 82}, {"BRING", 0.0, 25}, {"WILL", 0.0, 48},
+    {"KITCHEN", 48.9, 73}, {"RESTAURANT", 22.3, 0}, {"CHAIR", 44.0, 0}, {"GET", 39.0, 0},
+    {"PLAN", 0.0, 22}, {"TRAIN", 49.2, 0}, {"HOTEL", 37.3, 0}, {"TELEPHONE", 13.6, 28}, {"BAD", 23.4, 88},
+    {"ROOM", 0.0, 100}, {"TICKET", 12.4, 0}, {"NONE", 56.7, 0}, {"DONT-KNOW", 52.2, 33}, {"BATHROOM", 0.0, 43},
+    {"UNIVERSITY", 62.3, 0}, {"SCIENCE", 0.0, 92}, {"ENGLISH", 40.0, 0}, {"LEARN", 47.2, 43}, {"STUDENT", 43.4, 40},
+    {"NIGHT", 11.0, 0}, {"WEEK", 62.0, 0}, {"WRITE", 20.2, 0}, {"KNOW", 51.6, 0}, {"THANK-YOU", 20.4, 0},
+    {"NOT", 25.2, 0}, {"WORK", 18.5, 0}, {"HOMEWORK", 16.8, 0},
+};
+
+std::optional<KnownPosed> known(const std::string& gloss) {
+    for (const KnownPosed& k : kKnownPosed)
+        if (gloss == k.sign) return k;
+    return std::nullopt;
+}
+
+}  // namespace
+
+TEST(SignNotation, EverySignOfTheDefaultLexiconRealizesItsClaimedCodeOnThePosedHands) {
+    stimuli::StoryWorld world(kScenes.string(), "");
+    const signer::Signer signer(kScenes);
+    std::string failures, figures;
+    int checked = 0;
+    for (const stimuli::LexiconSign& sign : world.lexicon.signs) {
+        if (!sign.notation) continue;
+        const signer::TimelineClip clip = app::signAlone(world, signer, sign);
+        double contact = 0.0, orientation = 0.0;
+        int posedContacts = 0;
+        for (const stimuli::NotationCheck& c :
+             stimuli::checkSignNotation(sign, world.lexicon, world.shapes, world.handModel, app::posedHands(signer, clip, sign))) {
+            if (c.name.rfind("posed ", 0) != 0) {
+                EXPECT_TRUE(c.ok) << sign.gloss << ": " << c.name << ": " << c.detail;
+                continue;
+            }
+            const double figure = std::atof(c.detail.c_str());  // "12.3 mm at ...", "25 degrees from ..."
+            if (c.name.rfind("posed contact ", 0) == 0) ++posedContacts, contact = std::max(contact, c.ok ? 0.0 : figure);
+            else orientation = std::max(orientation, c.ok ? 0.0 : figure);
+        }
+        EXPECT_EQ(posedContacts, static_cast<int>(sign.contactEvents.size())) << sign.gloss;
+        ++checked;
+        const std::optional<KnownPosed> k = known(sign.gloss);
+        const bool worse = contact > (k ? k->contactMm + 0.5 : 0.0) || orientation > (k ? k->orientationDeg + 0.5 : 0.0);
+        char line[160];
+        std::snprintf(line, sizeof line, "\n    {\"%s\", %.1f, %.0f},", sign.gloss.c_str(), contact, orientation);
+        if (contact > 0.0 || orientation > 0.0) figures += line;
+        if (worse) failures += line;
+    }
+    EXPECT_GT(checked, 200);
+    EXPECT_TRUE(failures.empty()) << "posed hands that miss a contact by more than " << stimuli::kContactReachedMm
+                                  << " mm or turn more than " << stimuli::kPosedOrientationDeg
+                                  << " degrees from the asked orientation (sign, contact mm, degrees):" << failures
+                                  << "\n  all that miss now:" << figures;
+}
