@@ -113,32 +113,30 @@ stimuli::TransitionPacer pacerOf(const SignerRig* rig, std::shared_ptr<const voi
         add(&query.seconds, sizeof query.seconds);
         add(&query.peakSpeedMmPerSecond, sizeof query.peakSpeedMmPerSecond);
         key += query.insideItem ? 'i' : 't';
-        for (const auto* ends : {&query.from, &query.to})
-            for (const stimuli::TimelineKey& k : *ends) {
-                const double values[] = {k.rest ? 1.0 : 0.0, k.pose.positionMm.x, k.pose.positionMm.y, k.pose.positionMm.z,
-                                         k.pose.orientation.w, k.pose.orientation.x, k.pose.orientation.y,
-                                         k.pose.orientation.z};
-                add(values, sizeof values);
-                const hand::HandControls& c = k.controls;
-                const float thumb[] = {c.thumb.bendDeg, c.thumb.spreadDeg, c.thumb.mcpDeg, c.thumb.ipDeg};
-                add(thumb, sizeof thumb);
-                for (const hand::FingerControls& f : c.fingers) {
-                    const float finger[] = {f.spreadDeg, f.bend, f.hook};
-                    add(finger, sizeof finger);
-                }
-                key += k.handshape;
-                key += '\0';
+        // A key's bits: its time (inside intoTouch), flags, pose and hand controls (the touch the
+        // transition goes into settles on the hand as its controls shape it).
+        const auto addKey = [&key, &add](const stimuli::TimelineKey& k, bool withTime) {
+            if (withTime) add(&k.timeSeconds, sizeof k.timeSeconds);
+            const double values[] = {k.rest ? 1.0 : 0.0, k.passThrough ? 1.0 : 0.0,
+                                     k.pose.positionMm.x, k.pose.positionMm.y, k.pose.positionMm.z,
+                                     k.pose.orientation.w, k.pose.orientation.x, k.pose.orientation.y,
+                                     k.pose.orientation.z};
+            add(values, sizeof values);
+            const hand::HandControls& c = k.controls;
+            const float thumb[] = {c.thumb.bendDeg, c.thumb.spreadDeg, c.thumb.mcpDeg, c.thumb.ipDeg};
+            add(thumb, sizeof thumb);
+            for (const hand::FingerControls& f : c.fingers) {
+                const float finger[] = {f.spreadDeg, f.bend, f.hook};
+                add(finger, sizeof finger);
             }
+            key += k.handshape;
+            key += '\0';
+        };
+        for (const auto* ends : {&query.from, &query.to})
+            for (const stimuli::TimelineKey& k : *ends) addKey(k, false);
         for (const std::vector<stimuli::TimelineKey>& keys : query.intoTouch) {
             key += 'k';
-            for (const stimuli::TimelineKey& k : keys) {
-                const double values[] = {k.timeSeconds, k.rest ? 1.0 : 0.0, k.passThrough ? 1.0 : 0.0,
-                                         k.pose.positionMm.x, k.pose.positionMm.y, k.pose.positionMm.z,
-                                         k.pose.orientation.w, k.pose.orientation.x, k.pose.orientation.y, k.pose.orientation.z};
-                add(values, sizeof values);
-                key += k.handshape;
-                key += '\0';
-            }
+            for (const stimuli::TimelineKey& k : keys) addKey(k, true);
         }
         // Controls with fields the key does not list (hand/hand_model.hpp changed): this
         // pacer's answers are not shared.

@@ -295,6 +295,33 @@ TEST(Clearance, TransitionsAreJudgedAtTheItemsOwnKeysNotTheNearestFrame) {
     EXPECT_TRUE(nearest.violations[0].transition);
 }
 
+TEST(Clearance, APacedTransitionIntoATouchIsRememberedOnlyForTheSameHandsInThatTouch) {
+    // The rig remembers the pacer's answers (SignerRig::pacerMemo). A touch settles on the hands
+    // as their controls shape them, so a query that differs only in the controls of the touch
+    // it goes into must be paced afresh, never answered from the memory of the other.
+    const World& w = world();
+    std::vector<stimuli::TransitionQuery> intoTouch;
+    stimuli::TimelineSources sources = w.sources();
+    sources.transitions = [&](const stimuli::TransitionQuery& q) {
+        if (!q.intoTouch[0].empty() || !q.intoTouch[1].empty()) intoTouch.push_back(q);
+        return w.pacer(q);
+    };
+    for (const char* file : {"story-01.json", "story-03.json", "story-06.json"})
+        stimuli::buildTimeline(w.story(kScenes / "stories" / file), stimuli::VerbVersion::Point, sources);
+    ASSERT_FALSE(intoTouch.empty());
+    int differing = 0;
+    for (stimuli::TransitionQuery q : intoTouch) {
+        const double remembered = w.pacer(q);  // now in the memory
+        for (std::vector<stimuli::TimelineKey>& keys : q.intoTouch)
+            for (stimuli::TimelineKey& k : keys) k.controls = w.shapes.at("5").controls;
+        const double afresh = signer::pacedTransitionSeconds(w.signer.rig(), q);
+        EXPECT_EQ(w.pacer(q), afresh);
+        differing += afresh != remembered;
+    }
+    // The property is only tested where the controls change the answer.
+    EXPECT_GT(differing, 0) << intoTouch.size() << " queries into a touch";
+}
+
 TEST(Clearance, RoutedFramesOutsideTheVerbSlotsAreTheSameInEveryVersion) {
     // A detour depends only on the keys at its ends and on where the arms are, and the arms
     // are solved afresh after every verb slot: so the frames a study renders once stay shared.
