@@ -37,6 +37,30 @@ constexpr double kFlickShare = 0.35;
 constexpr int kTogetherTurnSamples = 4;
 // [D] A rub moves 8 mm to each side.
 constexpr double kRubMm = 8.0;
+// [D] A turn of the hand wider than this (a flip: COOK's palm down to palm up) may go either way
+// round; narrower, the shortest way is the one a forearm takes.
+constexpr double kWideTurnRad = 120.0 * kPi / 180.0;
+
+// The orientation `u` (0..1) of the way from `q0` to `q1` that a right forearm turns (the
+// notation's orientations are the right hand's; the left hand mirrors them). Within kWideTurnRad
+// the shortest way. A wider turn, about the axis of the shortest, goes the way whose midpoint
+// has the palm toward the body's midline and the chest (left and back): through the forearm's
+// neutral rotation (thumb up, SPEC §1.1's arm limits: about 90° of pronation or supination each
+// side of it), as a signer flips the hand, never the other way round through the limits (COOK
+// with its palm facing out halfway asked the arm to pronate 180°).
+glm::dquat forearmTurn(const glm::dquat& q0, const glm::dquat& q1, double u) {
+    glm::dquat r = q1 * glm::inverse(q0);
+    if (r.w < 0.0) r = -r;
+    const double angle = 2.0 * std::acos(std::min(1.0, r.w));
+    const glm::dvec3 v(r.x, r.y, r.z);
+    if (angle <= kWideTurnRad || glm::length(v) < 1e-9) return slerpShortest(q0, q1, u);
+    const glm::dvec3 axis = glm::normalize(v);
+    const glm::dvec3 neutralPalm = glm::normalize(glm::dvec3(-1.0, 0.0, -0.6));
+    const double shortWay = glm::dot(palmDirection(glm::angleAxis(0.5 * angle, axis) * q0), neutralPalm);
+    const double longWay = glm::dot(palmDirection(glm::angleAxis(-0.5 * (2.0 * kPi - angle), axis) * q0), neutralPalm);
+    if (longWay <= shortWay) return slerpShortest(q0, q1, u);
+    return glm::normalize(glm::angleAxis(-u * (2.0 * kPi - angle), axis) * q0);
+}
 
 glm::dvec3 mirror(const glm::dvec3& v) { return {-v.x, v.y, v.z}; }
 
@@ -373,7 +397,7 @@ private:
                 }
                 HandPose pose;
                 pose.positionMm = position;
-                pose.orientation = slerpShortest(q0, q1, u);
+                pose.orientation = forearmTurn(q0, q1, u);
                 std::string shape = handshapeAt(p, u);
                 if (oscillates) applyLocal(p, k, opposite, start, pose, shape);
                 if (h == 1) {
