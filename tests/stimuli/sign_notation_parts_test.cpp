@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace signstim::stimuli {
@@ -279,6 +280,23 @@ TEST(SignNotationParts, AFlipOfThePalmTurnsThroughTheForearmsNeutralRotation) {
             EXPECT_GT(most, 0.85) << palms << " hand " << h << ": the palm never faces the midline on its way over";
         }
     }
+}
+
+// A half turn that also swings the fingers (BAD: fingers up, palm to the chin; then fingers
+// forward, palm down) swings the fingers the short way, in their own plane, and twists the palm
+// through the midline: never the fingers out to the side, as the one-axis half turn takes them.
+TEST(SignNotationParts, AHalfTurnThatSwingsTheFingersTwistsThroughTheMidline) {
+    const Lexicon lexicon = parse(lexiconWith(R"({"parts": [{"seconds": 0.4, "handshape": "B", "fingers": "up", "palm": "back",
+        "endFingers": "forward", "endPalm": "down", "at": "neutral-right", "path": {"shape": "arc", "direction": "forward",
+        "size": 80, "side": "up"}}]})"));
+    const auto& keys = lexicon.signs.front().keyframes.front();
+    ASSERT_GE(keys.size(), 3u);
+    double most = -1.0;
+    for (const VerbKeyframe& k : keys) {
+        EXPECT_LT(std::abs(fingersDirection(k.pose.orientation).x), 1e-6) << "the fingers swing out of their plane at " << k.timeSeconds << " s";
+        most = std::max(most, -palmDirection(k.pose.orientation).x);
+    }
+    EXPECT_GT(most, 0.85) << "the palm never faces the midline on its way";
 }
 
 }  // namespace
