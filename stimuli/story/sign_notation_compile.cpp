@@ -37,6 +37,49 @@ constexpr double kFlickShare = 0.35;
 constexpr int kTogetherTurnSamples = 4;
 // [D] A rub moves 8 mm to each side.
 constexpr double kRubMm = 8.0;
+// [D] A turn of the hand wider than this (a flip: COOK's palm down to palm up, half a turn) may
+// go either way round, the longer way at most 210°; narrower, the shortest way is the one a
+// forearm takes (BAD's 125° from the chin down and out).
+constexpr double kWideTurnRad = 150.0 * kPi / 180.0;
+// [D] Two ways of a wide turn whose middles are closer than this go the same way round (the
+// two ways round a half turn are 180° apart halfway; BAD's, a swing and a twist, 70°).
+constexpr double kSameWayRad = 45.0 * kPi / 180.0;
+
+// The orientation `u` (0..1) of the way from `q0` to `q1` that a right forearm turns (the
+// notation's orientations are the right hand's; the left hand mirrors them). Within kWideTurnRad
+// the shortest way. A wider turn is what a signer makes as a swing of the fingers' direction (the
+// shortest, at one pace) and a twist about the fingers, the twist going the way whose midpoint
+// has the palm toward the body's midline and the chest (left and back): through the forearm's
+// neutral rotation (thumb up; hand/arm_ik.hpp: about 90° of pronation or supination each side of
+// it), as a signer flips the hand, never round the other way through the limits (COOK's palm
+// facing out halfway asked the forearm to pronate 180°; BAD's and HOT's palm, toward the face at
+// first, turns down or out by pronating through neutral).
+glm::dquat forearmTurn(const glm::dquat& q0, const glm::dquat& q1, double u) {
+    if (u <= 0.0) return q0;
+    if (u >= 1.0) return q1;
+    if (rotationAngleBetween(q0, q1) <= kWideTurnRad) return slerpShortest(q0, q1, u);
+    const glm::dvec3 f0 = fingersDirection(q0), f1 = fingersDirection(q1);
+    const glm::dvec3 across = glm::cross(f0, f1);
+    const double swing = std::atan2(glm::length(across), glm::dot(f0, f1));
+    const glm::dvec3 swingAxis = glm::length(across) > 1e-9 ? glm::normalize(across) : glm::dvec3(0.0, 1.0, 0.0);
+    // The twist left after the whole swing: the palm's turn about the end's fingers.
+    const glm::dvec3 swungPalm = glm::angleAxis(swing, swingAxis) * palmDirection(q0), p1 = palmDirection(q1);
+    const double twist = std::atan2(glm::dot(glm::cross(swungPalm, p1), f1), glm::dot(swungPalm, p1));
+    const auto along = [&](double t, double turn) {
+        const glm::dquat swung = glm::angleAxis(t * swing, swingAxis) * q0;
+        return glm::normalize(glm::angleAxis(t * turn, fingersDirection(swung)) * swung);
+    };
+    const double otherWay = twist > 0.0 ? twist - 2.0 * kPi : twist + 2.0 * kPi;
+    const glm::dvec3 neutralPalm = glm::normalize(glm::dvec3(-1.0, 0.0, -0.6));
+    const double turn = glm::dot(palmDirection(along(0.5, otherWay)), neutralPalm) >
+                                glm::dot(palmDirection(along(0.5, twist)), neutralPalm)
+                            ? otherWay
+                            : twist;
+    // Where the shortest slerp already goes this way round (its middle within kSameWayRad of this
+    // one's), it is kept: the same motion, to the bit, as before this rule (AGAIN, HOW).
+    if (rotationAngleBetween(slerpShortest(q0, q1, 0.5), along(0.5, turn)) < kSameWayRad) return slerpShortest(q0, q1, u);
+    return along(u, turn);
+}
 
 glm::dvec3 mirror(const glm::dvec3& v) { return {-v.x, v.y, v.z}; }
 
@@ -373,7 +416,7 @@ private:
                 }
                 HandPose pose;
                 pose.positionMm = position;
-                pose.orientation = slerpShortest(q0, q1, u);
+                pose.orientation = forearmTurn(q0, q1, u);
                 std::string shape = handshapeAt(p, u);
                 if (oscillates) applyLocal(p, k, opposite, start, pose, shape);
                 if (h == 1) {

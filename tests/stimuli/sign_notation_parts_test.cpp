@@ -3,10 +3,13 @@
 // relation per part (compounds like STUDENT). Lexicons written here are synthetic.
 #include "stimuli/story/sign_notation_check.hpp"
 #include "stimuli/story/timeline.hpp"
+#include "stimuli/verbs/sora.hpp"
 #include "tests/stimuli/notation_fixture.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace signstim::stimuli {
@@ -251,6 +254,49 @@ TEST(SignNotationParts, ACarriedBaseHandMovesWithTheDominantHand) {
     const Lexicon still = with("");
     const std::vector<TimelineKey> held = track(still.signs.front(), 1);
     EXPECT_LT(glm::distance(positionAt(held, end), positionAt(held, 0.0)), 1e-6) << "without \"carried\" the base hand holds still";
+}
+
+// Issue 22 (posed orientation): a flip of the palm (COOK) turns the forearm through its neutral
+// rotation, palm toward the midline halfway, as a signer does: never the other way round, palm
+// out, which asks a forearm to pronate 180° beyond its limits. Each hand of a mirrored pair
+// turns its own way (the left hand's midline is to its right).
+TEST(SignNotationParts, AFlipOfThePalmTurnsThroughTheForearmsNeutralRotation) {
+    for (const char* palms : {R"("palm": "down", "endPalm": "up")", R"("palm": "up", "endPalm": "down")"}) {
+        const Lexicon lexicon = parse(lexiconWith(std::string(R"({"hands": "mirrored", "parts": [{"seconds": 0.6, "handshape": "B",
+            "fingers": "forward", "endFingers": "forward", )") + palms + R"(, "at": "neutral", "offset": [90, 0, 0],
+            "path": {"shape": "arc", "direction": "right", "size": 60, "side": "up"}}]})"));
+        const LexiconSign& sign = lexicon.signs.front();
+        ASSERT_EQ(sign.keyframes.size(), 2u);
+        for (std::size_t h = 0; h < 2; ++h) {
+            const double midline = h == 0 ? -1.0 : 1.0;  // +x is the signer's right
+            const auto& keys = sign.keyframes[h];
+            ASSERT_GE(keys.size(), 3u);
+            double most = -1.0;
+            for (const VerbKeyframe& k : keys) {
+                const double toward = midline * palmDirection(k.pose.orientation).x;
+                EXPECT_GT(toward, -0.05) << palms << " hand " << h << ": the palm turns out at " << k.timeSeconds << " s";
+                most = std::max(most, toward);
+            }
+            EXPECT_GT(most, 0.85) << palms << " hand " << h << ": the palm never faces the midline on its way over";
+        }
+    }
+}
+
+// A half turn that also swings the fingers (BAD: fingers up, palm to the chin; then fingers
+// forward, palm down) swings the fingers the short way, in their own plane, and twists the palm
+// through the midline: never the fingers out to the side, as the one-axis half turn takes them.
+TEST(SignNotationParts, AHalfTurnThatSwingsTheFingersTwistsThroughTheMidline) {
+    const Lexicon lexicon = parse(lexiconWith(R"({"parts": [{"seconds": 0.4, "handshape": "B", "fingers": "up", "palm": "back",
+        "endFingers": "forward", "endPalm": "down", "at": "neutral-right", "path": {"shape": "arc", "direction": "forward",
+        "size": 80, "side": "up"}}]})"));
+    const auto& keys = lexicon.signs.front().keyframes.front();
+    ASSERT_GE(keys.size(), 3u);
+    double most = -1.0;
+    for (const VerbKeyframe& k : keys) {
+        EXPECT_LT(std::abs(fingersDirection(k.pose.orientation).x), 1e-6) << "the fingers swing out of their plane at " << k.timeSeconds << " s";
+        most = std::max(most, -palmDirection(k.pose.orientation).x);
+    }
+    EXPECT_GT(most, 0.85) << "the palm never faces the midline on its way";
 }
 
 }  // namespace
