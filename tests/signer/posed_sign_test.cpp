@@ -29,13 +29,12 @@ struct KnownPosed {
 };
 const KnownPosed kKnownPosed[] = {
     {"COFFEE", 11.4, 0}, {"SISTER", 68.4, 48}, {"BOOK", 14.7, 0}, {"BROTHER", 29.8, 33}, {"HUSBAND", 68.2, 0},
-    {"FORGET", 12.6, 68}, {"LOSE", 52.5, 0}, {"NEIGHBOR", 24.1, 0}, {"PRACTICE", 54.5, 37},
-    {"RECIPE", 28.1, 38}, {"HOW", 52.0, 0}, {"FAMILY", 45.7, 0}, {"REMEMBER", 50.2, 38}, {"SON", 165.1, 79},
-    {"DAUGHTER", 165.1, 94}, {"WIFE", 64.0, 0}, {"BELIEVE", 64.0, 0}, {"SOON", 79.3, 63},
+    {"FORGET", 0.0, 66}, {"LOSE", 52.5, 0}, {"NEIGHBOR", 24.1, 0}, {"PRACTICE", 54.5, 37},
+    {"RECIPE", 28.1, 38}, {"HOW", 52.0, 0}, {"FAMILY", 45.7, 0}, {"REMEMBER", 50.2, 38}, {"SON", 165.1, 78},
+    {"DAUGHTER", 165.1, 82}, {"WIFE", 64.0, 0}, {"BELIEVE", 64.0, 0}, {"SOON", 79.3, 63},
     {"IMPORTANT", 30.2, 0}, {"YEAR", 18.6, 0}, {"BABY", 182.0, 41}, {"CHANGE", 86.8, 54}, {"DOOR", 59.8, 55},
-    {"WILL", 0.0, 48}, {"KITCHEN", 48.9, 73}, {"GET", 39.0, 0}, {"TRAIN", 49.2, 0}, {"HOTEL", 37.3, 0},
-    {"BAD", 23.4, 88}, {"TICKET", 12.4, 0}, {"UNIVERSITY", 62.3, 0}, {"LEARN", 47.2, 43},
-    {"STUDENT", 43.4, 40},
+    {"WILL", 0.0, 48}, {"KITCHEN", 27.4, 0}, {"GET", 39.0, 0}, {"TRAIN", 49.2, 0}, {"HOTEL", 37.3, 0},
+    {"TICKET", 12.4, 0}, {"UNIVERSITY", 43.6, 0}, {"LEARN", 43.4, 0}, {"STUDENT", 43.4, 40},
 };
 
 std::optional<KnownPosed> known(const std::string& gloss) {
@@ -49,7 +48,7 @@ std::optional<KnownPosed> known(const std::string& gloss) {
 TEST(SignNotation, EverySignOfTheDefaultLexiconRealizesItsClaimedCodeOnThePosedHands) {
     stimuli::StoryWorld world(kScenes.string(), "");
     const signer::Signer signer(kScenes);
-    std::string failures, figures;
+    std::string failures, figures, improved;
     int checked = 0;
     for (const stimuli::LexiconSign& sign : world.lexicon.signs) {
         if (!sign.notation) continue;
@@ -74,10 +73,16 @@ TEST(SignNotation, EverySignOfTheDefaultLexiconRealizesItsClaimedCodeOnThePosedH
         std::snprintf(line, sizeof line, "\n    {\"%s\", %.1f, %.0f},", sign.gloss.c_str(), contact, orientation);
         if (contact > 0.0 || orientation > 0.0) figures += line;
         if (worse) failures += line;
+        // A known sign that now does better by more than the tolerance: its line must follow it
+        // down, or a later regression back to the old figure would pass unseen.
+        if (k && (contact < k->contactMm - 0.5 || orientation < k->orientationDeg - 0.5))
+            improved += line;
     }
     EXPECT_GT(checked, 200);
     EXPECT_TRUE(failures.empty()) << "posed hands that miss a contact by more than " << stimuli::kContactReachedMm
                                   << " mm or turn more than " << stimuli::kPosedOrientationDeg
                                   << " degrees from the asked orientation (sign, contact mm, degrees):" << failures
+                                  << "\n  all that miss now:" << figures;
+    EXPECT_TRUE(improved.empty()) << "signs of kKnownPosed that now do better; lower or remove their lines:" << improved
                                   << "\n  all that miss now:" << figures;
 }
