@@ -61,7 +61,9 @@ export SIGNSTIM_TEST_BREADTH=sanitizer  # tests/test_breadth.hpp: the long sweep
 status=0
 skip=()
 ((all)) || skip=(-E '^CrashSafety\.|^slurm_')
-ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 900 "${skip[@]}" "${ctest_args[@]}" || status=1
+# One CPU test per core, and a browser test beside them (run.sh; tests/CMakeLists.txt, "CPU slots").
+ctest --test-dir "$build" --output-on-failure -j "$((jobs + 1))" --resource-spec-file "$build/ctest-resources.json" \
+  --timeout 900 "${skip[@]}" "${ctest_args[@]}" || status=1
 tested=$SECONDS
 echo "sanitize: tests $((tested - built)) s"
 if ((fuzz)); then
