@@ -9,7 +9,8 @@
 #
 # The sweeps that cost minutes under ASan take a sample that still runs every code path
 # (SIGNSTIM_TEST_BREADTH=sanitizer, tests/test_breadth.hpp: 3 of the 12 default stories in the
-# motion tests, 6 of 20 loci pairs per verb slot); the gcc suite (./run.sh test) sweeps them whole.
+# motion tests, 6 of 20 loci pairs per verb slot; docs/fuzzing.md); the gcc suite (./run.sh test)
+# sweeps them whole, and so does SIGNSTIM_TEST_BREADTH=full scripts/sanitize.sh.
 #
 # Usage: scripts/sanitize.sh [--all] [--fuzz-seconds N] [--no-fuzz] [-- CTEST-ARGS...]
 #   --all             also the 4 tests left out by default to keep CI within 45 minutes:
@@ -33,7 +34,7 @@ while (($#)); do
     --no-fuzz) fuzz=0; shift ;;
     --all) all=1; shift ;;
     --) shift; ctest_args=("$@"); break ;;
-    -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "sanitize: unknown option '$1' (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -57,7 +58,8 @@ export LD_PRELOAD=$(cd "$build" && pwd)/tests/sanitizers/libsignstim_keep_vulkan
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:check_initialization_order=1:strict_init_order=1
 export LSAN_OPTIONS=suppressions=$supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-export SIGNSTIM_TEST_BREADTH=sanitizer  # tests/test_breadth.hpp: the long sweeps take a sample here
+# tests/test_breadth.hpp: the long sweeps take a sample here (SIGNSTIM_TEST_BREADTH=full: all of it).
+export SIGNSTIM_TEST_BREADTH=${SIGNSTIM_TEST_BREADTH:-sanitizer}
 status=0
 skip=()
 ((all)) || skip=(-E '^CrashSafety\.|^slurm_')
