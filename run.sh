@@ -29,7 +29,7 @@ if [[ $mode == test ]]; then
   # which mostly wait on Chromium playing clips, take none: they run beside them in the extra
   # job (tests/CMakeLists.txt, "CPU slots").
   ctest --test-dir "$build" --output-on-failure -j "$((jobs + 1))" \
-    --resource-spec-file "$build/ctest-resources.json" --timeout 600
+    --resource-spec-file "$(cd "$build" && pwd)/ctest-resources.json" --timeout 600
 else
   # The default study at its quick settings (320x240, 15 fps): a few minutes on 2 cores, into
   # out/study (out/ is in .gitignore, so the clips never show up in `git status`).

@@ -64,7 +64,7 @@ status=0
 skip=()
 ((all)) || skip=(-E '^CrashSafety\.|^slurm_')
 # One CPU test per core, and a browser test beside them (run.sh; tests/CMakeLists.txt, "CPU slots").
-ctest --test-dir "$build" --output-on-failure -j "$((jobs + 1))" --resource-spec-file "$build/ctest-resources.json" \
+ctest --test-dir "$build" --output-on-failure -j "$((jobs + 1))" --resource-spec-file "$(cd "$build" && pwd)/ctest-resources.json" \
   --timeout 900 "${skip[@]}" "${ctest_args[@]}" || status=1
 tested=$SECONDS
 echo "sanitize: tests $((tested - built)) s"
