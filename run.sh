@@ -24,8 +24,12 @@ cmake --build "$build" -j "$jobs"
 echo "run.sh: install $((installed - start)) s, build $((SECONDS - installed)) s"
 
 if [[ $mode == test ]]; then
-  # lavapipe renders with several threads per draw; two test processes keep both cores busy.
-  ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
+  # lavapipe renders with several threads per draw; one test process per core keeps them busy.
+  # The resource file gives each core one slot and every CPU test takes one; the browser tests,
+  # which mostly wait on Chromium playing clips, take none: they run beside them in the extra
+  # job (tests/CMakeLists.txt, "CPU slots").
+  ctest --test-dir "$build" --output-on-failure -j "$((jobs + 1))" \
+    --resource-spec-file "$(cd "$build" && pwd)/ctest-resources.json" --timeout 600
 else
   # The default study at its quick settings (320x240, 15 fps): a few minutes on 2 cores, into
   # out/study (out/ is in .gitignore, so the clips never show up in `git status`).

@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
 # The test suite built with clang -fsanitize=address,undefined (all of it with --all), then every fuzz target
 # briefly (issue 13 §2–§3). One build serves both: build-sanitize is configured with
-# -DSIGNSTIM_FUZZ=ON, which instruments our code for the sanitizers and libFuzzer's coverage
-# and also builds the fuzz binaries. Vulkan tests run under the validation layer as in the
+# -DSIGNSTIM_FUZZ=ON, which instruments our code for the sanitizers, the libraries the fuzz
+# binary links for libFuzzer's coverage, and also builds the fuzz binaries. Vulkan tests run under the validation layer as in the
 # ordinary suite. Any sanitizer report fails the test that made it (UBSan does not recover;
 # LeakSanitizer's suppressions, tests/sanitizers/lsan.supp, name only the Vulkan driver's and
 # system libraries).
 #
+# The sweeps that cost minutes under ASan take a sample that still runs every code path
+# (SIGNSTIM_TEST_BREADTH=sanitizer, tests/test_breadth.hpp: 3 of the 12 default stories in the
+# motion tests, 6 of 20 loci pairs per verb slot; docs/fuzzing.md); the gcc suite (./run.sh test)
+# sweeps them whole, and so does SIGNSTIM_TEST_BREADTH=full scripts/sanitize.sh.
+#
 # Usage: scripts/sanitize.sh [--all] [--fuzz-seconds N] [--no-fuzz] [-- CTEST-ARGS...]
-#   --all             also the 4 tests left out by default to keep CI within 30 minutes:
+#   --all             also the 4 tests left out by default to keep CI within 45 minutes:
 #                     CrashSafety.* (SIGKILL at 20 random moments per command) and the Slurm
 #                     test. They test what the kernel and Slurm do to a run (killed, cancelled,
 #                     resumed); every line of ours they reach also runs under the sanitizers in
@@ -29,7 +34,7 @@ while (($#)); do
     --no-fuzz) fuzz=0; shift ;;
     --all) all=1; shift ;;
     --) shift; ctest_args=("$@"); break ;;
-    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "sanitize: unknown option '$1' (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -53,10 +58,14 @@ export LD_PRELOAD=$(cd "$build" && pwd)/tests/sanitizers/libsignstim_keep_vulkan
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:check_initialization_order=1:strict_init_order=1
 export LSAN_OPTIONS=suppressions=$supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# tests/test_breadth.hpp: the long sweeps take a sample here (SIGNSTIM_TEST_BREADTH=full: all of it).
+export SIGNSTIM_TEST_BREADTH=${SIGNSTIM_TEST_BREADTH:-sanitizer}
 status=0
 skip=()
 ((all)) || skip=(-E '^CrashSafety\.|^slurm_')
-ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 900 "${skip[@]}" "${ctest_args[@]}" || status=1
+# One CPU test per core, and a browser test beside them (run.sh; tests/CMakeLists.txt, "CPU slots").
+ctest --test-dir "$build" --output-on-failure -j "$((jobs + 1))" --resource-spec-file "$(cd "$build" && pwd)/ctest-resources.json" \
+  --timeout 900 "${skip[@]}" "${ctest_args[@]}" || status=1
 tested=$SECONDS
 echo "sanitize: tests $((tested - built)) s"
 if ((fuzz)); then

@@ -2,7 +2,8 @@
 # shards and merge, interruption.
 signstim_add_test(signstim_app_study_tests
   SOURCES study_cli_test.cpp
-  LIBS nlohmann_json::nlohmann_json signstim_test_run_command signstim_stimuli)
+  LIBS nlohmann_json::nlohmann_json signstim_test_run_command signstim_stimuli
+  COST 80)  # StudyCli.ThreeShards* ~65 s, ~80 s under ASan
 add_dependencies(signstim_app_study_tests signstim)
 
 # The review page and the jsPsych experiment of a rendered study in headless Chromium (label
