@@ -71,11 +71,34 @@ struct Geometry {
     float cosAlpha, sinAlpha;  // angle at the shoulder between the axis and the upper arm
 };
 
+// Issue 21: the elbow never above its shoulder joint unless the hand is higher, and then no
+// higher than the wrist. The elbow's height is h0 + A·cos(swivel − φ) on its circle about the
+// shoulder–wrist axis; the swivels that keep it at or below max(shoulder, wrist) are an arc, and
+// a swivel outside it is moved to the arc's nearer end (or to the lowest swivel where no swivel
+// is low enough). Continuous in the swivel and the target, so a pose stays a continuous
+// function of time.
+float capElbowHeight(const Geometry& g, float swivel) {
+    const float a = g.arm->upperArmLengthMm;
+    const float h0 = a * g.cosAlpha * g.axis.y;                // height above the shoulder, axis part
+    const float c = a * g.sinAlpha * g.ref0.y, s = a * g.sinAlpha * g.ref1.y;  // h = h0 + c·cos + s·sin
+    const float amplitude = std::sqrt(c * c + s * s);
+    if (amplitude < 1e-3f) return swivel;
+    const float cap = std::max(0.0f, g.wrist.y - g.shoulder.y);
+    const float phi = std::atan2(s, c);  // the highest swivel
+    const float ratio = (cap - h0) / amplitude;
+    if (ratio >= 1.0f) return swivel;  // never above the cap
+    const float halfForbidden = std::acos(std::max(-1.0f, ratio));
+    const float offset = wrapPi(swivel - phi);
+    if (std::fabs(offset) >= halfForbidden) return swivel;
+    return phi + (offset >= 0.0f ? halfForbidden : -halfForbidden);
+}
+
 // `frames`: also the upper arm's frame, which the cost does not read (the swivel search asks
 // for the cost alone; the chosen swivel is evaluated again in full).
 Candidate evaluate(const Geometry& g, float swivel, bool frames = true) {
     const ArmModel& arm = *g.arm;
     Candidate c{};
+    swivel = capElbowHeight(g, swivel);
     c.elbowDirection = std::cos(swivel) * g.ref0 + std::sin(swivel) * g.ref1;
     const glm::vec3 upperDir = g.cosAlpha * g.axis + g.sinAlpha * c.elbowDirection;
     // The forearm folds toward the front of the upper arm: in the arm plane, perpendicular
@@ -242,8 +265,14 @@ ArmPose solveArm(const ArmModel& arm, const ArmTarget& target, const ArmSolveOpt
         const glm::vec3 inPlane = prev - glm::dot(prev, g.axis) * g.axis;
         if (glm::length(inPlane) > 1e-3f) {
             const float previous = std::atan2(glm::dot(inPlane, g.ref1), glm::dot(inPlane, g.ref0));
-            const float step = std::max(options.maxSwivelStepDeg, 0.5f) * kDeg;
-            swivel = searchSwivel(g, previous - step, previous + step, 1.0f * kDeg);
+            if (options.maxSwivelStepDeg <= 0.0f) {
+                // Follow the hint: the elbow where the given direction lies about the axis, no
+                // search (a search's argmin can change basin between neighbouring instants).
+                swivel = previous;
+            } else {
+                const float step = std::max(options.maxSwivelStepDeg, 0.5f) * kDeg;
+                swivel = searchSwivel(g, previous - step, previous + step, 1.0f * kDeg);
+            }
             windowed = true;
         }
     }
@@ -251,6 +280,7 @@ ArmPose solveArm(const ArmModel& arm, const ArmTarget& target, const ArmSolveOpt
         const float window = std::clamp(options.swivelWindowDeg, 1.0f, 180.0f) * kDeg;
         swivel = searchSwivel(g, -window, window, 3.0f * kDeg);
     }
+    swivel = capElbowHeight(g, swivel);
 
     const Candidate c = evaluate(g, swivel);
     ArmPose pose;

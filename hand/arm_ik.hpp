@@ -41,15 +41,16 @@ struct ArmLimits {
     // binding when the arm is raised (weighted by sin(elevation)).
     AngleRange shoulderPlane{-40.0f, 135.0f};
     // Forearm rotation from neutral (thumb up when the elbow is bent at the side):
-    // + supination (palm up), − pronation (palm down). AAOS / Norkin & White give 0–80° each;
-    // these wider limits are what the lexicon's contact signs were authored with (issue 21:
+    // + supination (palm up), − pronation (palm down). [S] Kapandji (The Physiology of the
+    // Joints vol. 1): pronation 85°, supination 90°. AAOS / Norkin & White give 0–80° each
+    // (clinical averages); the lexicon's contact signs were authored with these (issue 21:
     // tightening them sinks some into the body).
     AngleRange supination{-85.0f, 90.0f};
     // Wrist: + flexion (palm toward the forearm), − extension. AAOS: flexion 0–80°,
     // extension 0–70°.
     AngleRange wristFlexion{-70.0f, 80.0f};
-    // Wrist: + ulnar deviation (toward the little finger), − radial deviation. AAOS: ulnar
-    // 0–30° (wider here, as supination), radial 0–20°.
+    // Wrist: + ulnar deviation (toward the little finger), − radial deviation. [S] radial 0–20°
+    // (AAOS); ulnar 35°, within Kapandji's 30–45° (AAOS: 30°, narrower, as for supination).
     AngleRange wristUlnarDeviation{-20.0f, 35.0f};
 };
 
@@ -88,7 +89,9 @@ struct ArmTarget {
 struct ArmSolveOptions {
     // Continuity: the previous frame's elbow direction (ArmPose::elbowDirection). When set,
     // the swivel moves at most maxSwivelStepDeg from it, so the elbow never flips between
-    // neighbouring frames.
+    // neighbouring frames. maxSwivelStepDeg <= 0: the elbow takes the given direction itself
+    // (about the shoulder-wrist axis), no search. Either way the elbow stays at or below
+    // max(shoulder, wrist) (issue 21), the swivel moved to the nearest that does.
     std::optional<glm::vec3> previousElbowDirection;
     float maxSwivelStepDeg = 20.0f;
     // Without a previous elbow: the swivel is sought only within this angle of the natural

@@ -137,13 +137,15 @@ struct SignerPosture {
     std::optional<glm::vec2> headDeg;
     // Where each elbow should be (hand::ArmPose::elbowDirection, body frame), blended from the
     // elbows the clip's keys give: the arm solver looks for the swivel within
-    // kElbowHintWindowDeg of it, so the elbow moves smoothly between keys however the cost's
-    // basins shift. Absent: the solver's rule of the target alone.
+    // kElbowHintWindowDeg of it (or takes it, followElbowHint). Absent: the solver's rule of
+    // the target alone.
     std::optional<glm::vec3> rightElbowHint, leftElbowHint;
+    // The elbows at the hints themselves, no search (a clip's elbow track, signer/elbow_track.hpp).
+    bool followElbowHint = false;
     NonManualPosture nonManual;  // face, head, torso and shoulders
 };
 
-// [D] How far from a posture's elbow hint the arm solver may swing the elbow.
+// [D] How far from a posture's elbow hint the arm solver may swing the elbow (unless it follows it).
 inline constexpr float kElbowHintWindowDeg = 20.0f;
 
 struct PoseReport {

@@ -51,7 +51,8 @@ glm::vec3 gazePoint(const stimuli::GazeKey& key) {
     return key.targetMm ? gazePointForReferent(*key.targetMm) : gazePointForViewer();
 }
 
-TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline) : rig_(&rig), timeline_(std::move(timeline)) {
+TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, bool trackElbows)
+    : rig_(&rig), timeline_(std::move(timeline)) {
     // Transitions: neighbouring keys that no item's own keys hold (both hands have keys at
     // every transition's ends; the right track lists them). Each is routed on its own: the
     // arms at any instant depend on the wrist targets alone.
@@ -97,6 +98,16 @@ TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline) : r
     rightTouch_.assign(timeline_.right.size(), glm::vec3(0.0f));
     leftTouch_.assign(timeline_.left.size(), glm::vec3(0.0f));
     settleTouches();
+    // The elbows' track (signer/elbow_track.hpp): the arm solver's elbows on the settled wrists,
+    // no faster than an arm turns. From here on every posture follows it (straightPostureAt):
+    // the touches are settled again on the arms as they will be drawn, and the transitions routed.
+    if (trackElbows) {
+        elbows_ = ElbowTrack(*rig_, timeline_.durationSeconds, [this](double t) { return straightPostureAt(t); });
+        rightTouch_.assign(timeline_.right.size(), glm::vec3(0.0f));
+        leftTouch_.assign(timeline_.left.size(), glm::vec3(0.0f));
+        touchSpans_.clear();
+        settleTouches();
+    }
     const std::vector<stimuli::TimelineKey>& keys = timeline_.right;
     for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
         const double start = keys[k].timeSeconds, end = keys[k + 1].timeSeconds;
@@ -345,6 +356,7 @@ SignerPosture TimelineClip::straightPostureAt(double seconds, bool settled) cons
             posture.leftElbowHint = elbow;
         }
     }
+    elbows_.apply(seconds, posture);  // the arms follow the elbows' track (none while it is made)
     posture.nonManual = nonManualAt(timeline_, seconds);
     const stimuli::GazeSample gaze = stimuli::sampleGaze(timeline_.gaze, seconds);
     if (gaze.from) {

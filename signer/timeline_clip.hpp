@@ -47,6 +47,7 @@
 // that comes to or leaves the other from passing deeper on the way where its offset can). The
 // pacer (transitionPacer) times a transition into a touching item with the item settled.
 #include "signer/clip.hpp"
+#include "signer/elbow_track.hpp"
 #include "stimuli/story/timeline.hpp"
 #include "stimuli/story/timeline_builder.hpp"
 
@@ -60,8 +61,11 @@ class Signer;
 
 class TimelineClip final : public Clip {
 public:
-    // The keys carry their hand controls (resolved by the timeline's builder).
-    TimelineClip(const SignerRig& rig, stimuli::Timeline timeline);
+    // The keys carry their hand controls (resolved by the timeline's builder). `trackElbows`:
+    // the elbows follow an elbow track (signer/elbow_track.hpp); false (for now the default:
+    // issue 21, the track's lag sinks COOK and IX -> EMAIL, see motion_limits_test.cpp), the
+    // arm solver's choice near the keys' elbows at each instant.
+    TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, bool trackElbows = false);
 
     double durationSeconds() const override { return timeline_.durationSeconds; }
     SignerPosture postureAt(double seconds) const override;
@@ -97,6 +101,7 @@ private:
     const SignerRig* rig_;
     stimuli::Timeline timeline_;
     std::vector<Detour> detours_;  // in time order
+    ElbowTrack elbows_;
     std::vector<glm::vec3> rightElbows_, leftElbows_;  // per key of each track: the solver's elbow there
     std::vector<glm::vec3> rightTouch_, leftTouch_;    // per key of each track: its wrist's settling offset (body frame, mm)
     // An item whose touch is settled, or a transition into or out of one (blendTouches): the

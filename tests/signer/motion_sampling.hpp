@@ -29,7 +29,8 @@ struct Peak {
 struct MotionPeaks {
     Peak elbowAboveShoulderMm;       // elbow height above its shoulder joint or, where the hand is higher, the wrist
     Peak elbowSwingDegPerFrame;      // change of the upper arm's direction between 60 fps frames
-    Peak swivelStepDegPerFrame;      // turn of the elbow about the shoulder-wrist axis beyond its hint's, per 60 fps frame
+    Peak elbowTurnDegPerFrame;       // turn of the elbow's direction from the shoulder-wrist axis, per 60 fps frame
+    Peak swivelStepDegPerFrame;      // turn of the elbow about the shoulder-wrist axis (the axis's own motion apart), per 60 fps frame
     Peak hintStepDegPerFrame;        // turn of the elbow hint (the keys' elbows blended), per 60 fps frame
     Peak wristFlexionDeg, wristExtensionDeg, ulnarDeviationDeg, radialDeviationDeg, supinationDeg, pronationDeg;
     Peak wristSpeedMmPerSecond;      // the drawn wrist (the arm solution's)
@@ -40,7 +41,8 @@ struct MotionPeaks {
         const auto line = [](const char* name, const Peak& p) { std::printf("  %-28s %9.2f  at %s\n", name, p.value, p.where.c_str()); };
         line("elbow above shoulder/wrist (mm)", elbowAboveShoulderMm);
         line("elbow swing (deg/frame@60)", elbowSwingDegPerFrame);
-        line("swivel beyond hint (deg/frame@60)", swivelStepDegPerFrame);
+        line("elbow turn (deg/frame@60)", elbowTurnDegPerFrame);
+        line("swivel (deg/frame@60)", swivelStepDegPerFrame);
         line("hint step (deg/frame@60)", hintStepDegPerFrame);
         line("wrist flexion (deg)", wristFlexionDeg);
         line("wrist extension (deg)", wristExtensionDeg);
@@ -95,7 +97,14 @@ inline void measureClip(const signer::SignerRig& rig, const signer::Clip& clip, 
                 const auto& hintBefore = right ? previousPosture.rightElbowHint : previousPosture.leftElbowHint;
                 const double hintStep = hint && hintBefore ? angleDeg(*hint, *hintBefore) : 0.0;
                 peaks.hintStepDegPerFrame.take(hintStep * fps / 60.0, where);
-                peaks.swivelStepDegPerFrame.take((angleDeg(a.elbowDirection, p.elbowDirection) - hintStep) * fps / 60.0, where);
+                peaks.elbowTurnDegPerFrame.take(angleDeg(a.elbowDirection, p.elbowDirection) * fps / 60.0, where);
+                // The swivel's step: the previous elbow direction carried to this frame's axis
+                // (its component across the axis), then the angle about the axis to this one.
+                const glm::vec3 axis = glm::normalize(a.wristMm - a.shoulderMm);
+                const glm::vec3 carried = p.elbowDirection - glm::dot(p.elbowDirection, axis) * axis;
+                const glm::vec3 across = a.elbowDirection - glm::dot(a.elbowDirection, axis) * axis;
+                if (glm::length(carried) > 1e-3f && glm::length(across) > 1e-3f)
+                    peaks.swivelStepDegPerFrame.take(angleDeg(carried, across) * fps / 60.0, where);
                 peaks.wristSpeedMmPerSecond.take(glm::distance(a.wristMm, p.wristMm) * fps, where);
             }
         }
