@@ -4,8 +4,10 @@
 #include "app/clip_output.hpp"
 #include "app/commands.hpp"
 #include "signer/signer.hpp"
+#include "signer/timeline_clip.hpp"
 #include "signer/verb_clip.hpp"
 #include "stimuli/story/handshapes.hpp"
+#include "stimuli/story/timeline_builder.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/standard_output.hpp"
@@ -92,7 +94,12 @@ void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, co
     const ClipOutput output = checkClipOutput(o.outPath, o.size, o.fps, o.msaa, o.device, o.quiet);
     const Signer signer(scenesDir, o.avatarFile, o.boneMapFile.empty() ? BoneMapping{} : loadBoneMapping(o.boneMapFile));
     const stimuli::HandshapeLibrary shapes = stimuli::loadHandshapes(scenesDir / "handshapes.json", signer.rig().handModel());
-    const VerbClip clip(signer.rig(), shapes, performance);
+    // SPEC §6.2: at human speed on the posed wrists' path, as a story's verb slot plays it (the
+    // synthesis's own timing took SEND's wrist from -1 to 1 at 4.65 m/s).
+    stimuli::TimelineSources pacing;
+    pacing.shapes = &shapes;
+    pacing.transitions = transitionPacer(signer.rig());
+    const VerbClip clip(signer.rig(), shapes, stimuli::paceVerbPerformance(performance, pacing));
     const std::uint64_t frames = renderClipToOutput(output, signer, clip, clip.middleOfVerbSeconds());
     std::printf("%s: %s %s, %llu frame%s\n", output.out.string().c_str(), performance.verb.c_str(),
                 toString(performance.version).c_str(), static_cast<unsigned long long>(frames), frames == 1 ? "" : "s");

@@ -184,5 +184,14 @@ private:
 Timeline buildTimeline(const Story& story, VerbVersion version, const TimelineSources& sources,
                        const TimelineOptions& options = {});
 
+// SPEC §6.2: a verb performance at `rate` (the story's, over the item's boundary scale) and at
+// human speed, as a story's verb slot plays it (Builder::addVerb) and `signstim verb --out`
+// renders it: its keys' times divided by the rate, then stretched alike throughout until no
+// stretch between keys peaks above options.peakSpeedMmPerSecond, on its keys' straight path
+// and on the posed wrists' path that sources.transitions knows (empty: the straight path
+// alone). Uses sources.shapes (with sources.transitions) and nothing else of the sources.
+VerbPerformance paceVerbPerformance(VerbPerformance performance, const TimelineSources& sources,
+                                    const TimelineOptions& options = {}, double rate = 1.0);
+
 
 }  // namespace signstim::stimuli

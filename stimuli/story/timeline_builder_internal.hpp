@@ -42,6 +42,12 @@ inline TimelineKey key(double t, const HandPose& pose, const std::string& shape)
     return k;
 }
 
+// Builder::limitSpeed for any segment (the verb slot's pacing, paceVerbPerformance, shares it).
+void limitSegmentSpeed(Segment& segment, bool eachStretch, bool posedPath, const TimelineSources& sources,
+                       const TimelineOptions& options);
+// A key of a transition query: at rest, or the pose with its handshape's controls.
+TimelineKey resolvedQueryKey(const TimelineSources& sources, bool rest, const HandPose& pose, const std::string& handshape);
+
 class Builder {
 public:
     Builder(const Story& story, VerbVersion version, const TimelineSources& sources, const TimelineOptions& options,

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace signstim::stimuli::timeline_detail {
 namespace {
@@ -159,15 +160,15 @@ void Builder::addVerb(const StoryItem& item, int sentence, int index, bool befor
             missingAnimator_.push_back(e);
             p = sources_.verbs(item.gloss, VerbVersion::Point, subject, object, item.line, item.column);
         }
+        // At the story's rate, slowed to human speed (what `signstim verb --out` plays too).
+        p = paceVerbPerformance(std::move(p), sources_, options_, rate);
         Segment segment;
-        segment.durationSeconds = p.durationSeconds / rate;
+        segment.durationSeconds = p.durationSeconds;
         segment.contact = p.contact;
         for (const HandTrack& trackOfHand : p.hands) {
             const int h = trackOfHand.side == HandSide::Right ? kRight : kLeft;
-            for (const PerformanceKeyframe& k : trackOfHand.keyframes)
-                segment.hands[h].push_back(key(k.timeSeconds / rate, k.pose, k.handshape));
+            for (const PerformanceKeyframe& k : trackOfHand.keyframes) segment.hands[h].push_back(key(k.timeSeconds, k.pose, k.handshape));
         }
-        limitSpeed(segment, false, true);
         longest = std::max(longest, segment.durationSeconds);
         farthestIn.take(displacementMm({state_}, segment));
         std::array<HandState, 2> end{};

@@ -94,7 +94,21 @@ double Builder::transitionSeconds(const Travel& travel, const SignContact& next)
 // verb's straight path can pass inside the folded arm's reach, where the arm solution
 // pushes the wrist around: SEND from -1 to 1 peaked at 3.4 m/s with its keys at 2.45).
 void Builder::limitSpeed(Segment& segment, bool eachStretch, bool posedPath) const {
+    limitSegmentSpeed(segment, eachStretch, posedPath, sources_, options_);
+}
+
+void limitSegmentSpeed(Segment& segment, bool eachStretch, bool posedPath, const TimelineSources& sources_,
+                       const TimelineOptions& options_) {
     if (options_.peakSpeedMmPerSecond <= 0.0) return;
+    const auto restKey = [](double t) {
+        TimelineKey k;
+        k.timeSeconds = t;
+        k.rest = true;
+        return k;
+    };
+    const auto queryKey = [&sources_](bool rest, const HandPose& pose, const std::string& handshape) {
+        return resolvedQueryKey(sources_, rest, pose, handshape);
+    };
     std::vector<double> times;
     for (const auto& keys : segment.hands)
         for (const TimelineKey& k : keys) times.push_back(k.timeSeconds);
@@ -156,9 +170,15 @@ void Builder::limitSpeed(Segment& segment, bool eachStretch, bool posedPath) con
 
 // A key of the transition query: at rest, or the pose with its handshape's controls.
 TimelineKey Builder::queryKey(bool rest, const HandPose& pose, const std::string& handshape) const {
-    if (rest) return restKey(0.0);
-    TimelineKey k = key(0.0, pose, handshape);
-    k.controls = sources_.shapes->at(handshape).controls;
+    return resolvedQueryKey(sources_, rest, pose, handshape);
+}
+
+TimelineKey resolvedQueryKey(const TimelineSources& sources, bool rest, const HandPose& pose, const std::string& handshape) {
+    TimelineKey k;
+    k.rest = rest;
+    if (rest) return k;
+    k = key(0.0, pose, handshape);
+    k.controls = sources.shapes->at(handshape).controls;
     return k;
 }
 
@@ -193,3 +213,28 @@ double Builder::paced(double seconds, const std::vector<std::array<HandState, 2>
 }
 
 }  // namespace signstim::stimuli::timeline_detail
+
+namespace signstim::stimuli {
+
+VerbPerformance paceVerbPerformance(VerbPerformance performance, const TimelineSources& sources,
+                                    const TimelineOptions& options, double rate) {
+    using namespace timeline_detail;
+    Segment segment;
+    segment.durationSeconds = performance.durationSeconds / rate;
+    segment.contact = performance.contact;
+    for (const HandTrack& track : performance.hands) {
+        const int h = track.side == HandSide::Right ? kRight : kLeft;
+        for (const PerformanceKeyframe& k : track.keyframes) segment.hands[h].push_back(key(k.timeSeconds / rate, k.pose, k.handshape));
+    }
+    // A verb's performance, whose tempo is the version's own, is stretched alike throughout,
+    // on its keys' straight path and on the posed wrists' (Builder::limitSpeed).
+    limitSegmentSpeed(segment, false, true, sources, options);
+    performance.durationSeconds = segment.durationSeconds;
+    for (HandTrack& track : performance.hands) {
+        const std::vector<TimelineKey>& keys = segment.hands[track.side == HandSide::Right ? kRight : kLeft];
+        for (std::size_t i = 0; i < track.keyframes.size() && i < keys.size(); ++i) track.keyframes[i].timeSeconds = keys[i].timeSeconds;
+    }
+    return performance;
+}
+
+}  // namespace signstim::stimuli

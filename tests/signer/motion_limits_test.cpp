@@ -153,67 +153,107 @@ TEST(MotionLimits, GazeIsEyesAndHeadWithinTheirRangesAndTheHeadsSpeed) {
     expectGazeWithinEyesAndHead(peaks);
 }
 
-// Fails today: the elbows turn like the stories' (DISABLED_EveryStoryFrameTurnsItsElbowsSmoothly),
-// and the wrists peak at 4.65 m/s in verbs between far
-// loci (SEND point s=-1 o=1 at 0.68 s; measured 2026-11-26): a VerbClip plays the synthesis's
-// own timing, with no speed limit (its straight path passes ~130 mm from the right shoulder
-// joint, inside the folded arm's reach, and the arm solution pushes the wrist around it). In a
-// story the slot is paced by the posed wrists' path (3.38 -> 2.45 m/s for that SEND):
-// EveryVerbSlotKeepsItsWristsWithinSpec62 below. The elbow's height (0 mm) and the wrists'
-// ranges (at the arms' limits, within the cited ones above) pass on the grid (2026-11-26).
-TEST(MotionLimits, DISABLED_EveryVerbInstanceKeepsItsWristsAndElbowsWithinTheBodysLimits) {
-    // All 8 verbs; subject and object over -1..1 in steps of 0.1 (s != o where the verb has
-    // both); point, vector, uninflected; animator where its file exists. Two threads.
-    const SignerAndScenes& f = signerAndScenes();
-    const stimuli::StoryWorld& w = f.world;
-    const stimuli::VerbSources sources{&w.verbs, &w.models, kScenes / "animator", &w.shapes};
-    std::vector<std::pair<const stimuli::VerbDefinition*, std::pair<int, int>>> instances;
-    for (const auto& verb : w.verbs.verbs)
-        for (int s = -10; s <= 10; ++s)
-            for (int o = -10; o <= 10; ++o) {
-                const bool objectOnly = verb.objectOnly();
-                if (objectOnly && s != 0) continue;
-                if (!objectOnly && s == o) continue;
-                instances.push_back({&verb, {s, o}});
-            }
-    motion::MotionPeaks peaks[2];
-    std::size_t animatorClips[2] = {0, 0};
-    const auto work = [&](int part) {
-        for (std::size_t i = static_cast<std::size_t>(part); i < instances.size(); i += 2) {
-            const stimuli::VerbDefinition& verb = *instances[i].first;
-            const double s = instances[i].second.first / 10.0, o = instances[i].second.second / 10.0;
-            for (const stimuli::VerbVersion v : kVersions) {
-                stimuli::VerbPerformance performance;
-                try {
-                    performance = stimuli::synthesizeVerb(sources, verb.name, v, s, o);
-                } catch (const InputError&) {
-                    if (v == stimuli::VerbVersion::Animator) continue;  // no animator file for this instance
-                    throw;
+namespace {
+
+// The grid of verb instances of issue 21, each as `signstim verb --out` renders it and a story's
+// verb slot plays it (stimuli::paceVerbPerformance: at human speed on the posed wrists' path),
+// posed at 60 fps; measured once for the tests below.
+struct VerbGrid {
+    motion::MotionPeaks peaks;
+    std::size_t instances = 0, animatorClips = 0;
+};
+
+const VerbGrid& verbGrid() {
+    static const VerbGrid grid = [] {
+        // All 8 verbs; subject and object over -1..1 in steps of 0.1 (s != o where the verb has
+        // both); point, vector, uninflected; animator where its file exists. Under
+        // SIGNSTIM_TEST_BREADTH=sanitizer (tests/test_breadth.hpp) subject and object at -1, 0
+        // and 1, and the instances that have animator files.
+        const SignerAndScenes& f = signerAndScenes();
+        const stimuli::StoryWorld& w = f.world;
+        const std::filesystem::path animator = kScenes / "animator";
+        const stimuli::VerbSources sources{&w.verbs, &w.models, animator, &w.shapes};
+        test::noteSanitizerBreadth("verb instances with subject and object at -1, 0, 1, and those with animator files");
+        std::vector<std::pair<const stimuli::VerbDefinition*, std::pair<int, int>>> instances;
+        for (const auto& verb : w.verbs.verbs)
+            for (int s = -10; s <= 10; ++s)
+                for (int o = -10; o <= 10; ++o) {
+                    const bool objectOnly = verb.objectOnly();
+                    if (objectOnly && s != 0) continue;
+                    if (!objectOnly && s == o) continue;
+                    if (test::sanitizerBreadth() && (s % 10 != 0 || o % 10 != 0) &&
+                        !std::filesystem::exists(animator / stimuli::animatorFileName(verb, s / 10.0, o / 10.0)))
+                        continue;
+                    instances.push_back({&verb, {s, o}});
                 }
-                if (v == stimuli::VerbVersion::Animator) ++animatorClips[part];
-                const signer::VerbClip clip(f.signer.rig(), w.shapes, std::move(performance));
-                char name[96];
-                std::snprintf(name, sizeof name, "%s %s s=%.1f o=%.1f", verb.name.c_str(), stimuli::toString(v).c_str(), s, o);
-                motion::measureClip(f.signer.rig(), clip, name, 60.0, peaks[part]);
+        // As `signstim verb --out` paces it: the signer's pacer, whose answers the rig remembers.
+        stimuli::TimelineSources pacing;
+        pacing.shapes = &w.shapes;
+        pacing.transitions = signer::transitionPacer(f.signer.rig());
+        motion::MotionPeaks peaks[2];
+        std::size_t animatorClips[2] = {0, 0};
+        const auto work = [&](int part) {
+            for (std::size_t i = static_cast<std::size_t>(part); i < instances.size(); i += 2) {
+                const stimuli::VerbDefinition& verb = *instances[i].first;
+                const double s = instances[i].second.first / 10.0, o = instances[i].second.second / 10.0;
+                for (const stimuli::VerbVersion v : kVersions) {
+                    if (v == stimuli::VerbVersion::Animator && !std::filesystem::exists(animator / stimuli::animatorFileName(verb, s, o)))
+                        continue;
+                    stimuli::VerbPerformance performance = stimuli::synthesizeVerb(sources, verb.name, v, s, o);
+                    if (v == stimuli::VerbVersion::Animator) ++animatorClips[part];
+                    const signer::VerbClip clip(f.signer.rig(), w.shapes, stimuli::paceVerbPerformance(std::move(performance), pacing));
+                    char name[96];
+                    std::snprintf(name, sizeof name, "%s %s s=%.1f o=%.1f", verb.name.c_str(), stimuli::toString(v).c_str(), s, o);
+                    motion::measureClip(f.signer.rig(), clip, name, 60.0, peaks[part]);
+                }
             }
-        }
-    };
-    std::thread other(work, 1);
-    work(0);
-    other.join();
-    for (motion::Peak motion::MotionPeaks::*m :
-         {&motion::MotionPeaks::elbowAboveShoulderMm, &motion::MotionPeaks::elbowSwingDegPerFrame,
-          &motion::MotionPeaks::wristFlexionDeg, &motion::MotionPeaks::wristExtensionDeg,
-          &motion::MotionPeaks::ulnarDeviationDeg, &motion::MotionPeaks::radialDeviationDeg,
-          &motion::MotionPeaks::supinationDeg, &motion::MotionPeaks::pronationDeg,
-          &motion::MotionPeaks::wristSpeedMmPerSecond})
-        (peaks[0].*m).take((peaks[1].*m).value, (peaks[1].*m).where);
-    std::printf("%zu instances, %zu animator clips\n", instances.size(), animatorClips[0] + animatorClips[1]);
-    peaks[0].print("verb grid, 60 fps:");
-    EXPECT_GT(animatorClips[0] + animatorClips[1], 0u);
-    expectWristsWithinClinicalRanges(peaks[0]);
-    expectElbowsLowAndSmooth(peaks[0]);
-    EXPECT_LE(peaks[0].wristSpeedMmPerSecond.value, kWristSpeedMmPerSecond) << peaks[0].wristSpeedMmPerSecond.where;
+        };
+        std::thread other(work, 1);
+        work(0);
+        other.join();
+        VerbGrid g;
+        g.peaks = peaks[0];
+        for (motion::Peak motion::MotionPeaks::*m :
+             {&motion::MotionPeaks::elbowAboveShoulderMm, &motion::MotionPeaks::elbowSwingDegPerFrame,
+              &motion::MotionPeaks::elbowTurnDegPerFrame, &motion::MotionPeaks::swivelStepDegPerFrame,
+              &motion::MotionPeaks::hintStepDegPerFrame, &motion::MotionPeaks::wristFlexionDeg,
+              &motion::MotionPeaks::wristExtensionDeg, &motion::MotionPeaks::ulnarDeviationDeg,
+              &motion::MotionPeaks::radialDeviationDeg, &motion::MotionPeaks::supinationDeg,
+              &motion::MotionPeaks::pronationDeg, &motion::MotionPeaks::wristSpeedMmPerSecond,
+              &motion::MotionPeaks::headYawDeg, &motion::MotionPeaks::eyeYawDeg, &motion::MotionPeaks::eyePitchDeg,
+              &motion::MotionPeaks::headSpeedDegPerSecond})
+            (g.peaks.*m).take((peaks[1].*m).value, (peaks[1].*m).where);
+        g.instances = instances.size();
+        g.animatorClips = animatorClips[0] + animatorClips[1];
+        std::printf("%zu instances, %zu animator clips\n", g.instances, g.animatorClips);
+        g.peaks.print("verb grid, 60 fps:");
+        return g;
+    }();
+    return grid;
+}
+
+}  // namespace
+
+// Issue 21, item 2. Before the verb clip was paced (2026-11-26) this test posed the synthesis's
+// own timing, which `signstim verb --out` rendered as it was: the wrists peaked at 4.65 m/s
+// (SEND point s=-1 o=1 at 0.68 s: its straight path passes ~130 mm from the right shoulder
+// joint, inside the folded arm's reach, and the arm solution pushes the wrist around it). Now
+// the clip plays the performance as a story's verb slot does, slowed to SPEC §6.2 on the posed
+// wrists' path (stimuli::paceVerbPerformance). The elbow's swivel is
+// DISABLED_EveryVerbInstanceTurnsItsElbowsSmoothly's.
+TEST(MotionLimits, EveryVerbInstanceKeepsItsWristsAndElbowsWithinTheBodysLimits) {
+    const VerbGrid& grid = verbGrid();
+    EXPECT_GT(grid.animatorClips, 0u);
+    EXPECT_LE(grid.peaks.elbowAboveShoulderMm.value, kElbowAboveShoulderMm) << grid.peaks.elbowAboveShoulderMm.where;
+    expectWristsWithinClinicalRanges(grid.peaks);
+    EXPECT_LE(grid.peaks.wristSpeedMmPerSecond.value, kWristSpeedMmPerSecond) << grid.peaks.wristSpeedMmPerSecond.where;
+}
+
+// Fails today (issue 21, open), as DISABLED_EveryStoryFrameTurnsItsElbowsSmoothly does: the
+// elbow's swivel on the verb grid. Run with --gtest_also_run_disabled_tests.
+TEST(MotionLimits, DISABLED_EveryVerbInstanceTurnsItsElbowsSmoothly) {
+    const VerbGrid& grid = verbGrid();
+    EXPECT_LE(grid.peaks.swivelStepDegPerFrame.value, kSwivelStepDegPerFrame) << grid.peaks.swivelStepDegPerFrame.where;
 }
 
 TEST(FrameRateIndependence, ThePoseAtAnInstantIsTheSameAtEveryFrameRate) {
