@@ -115,6 +115,13 @@ TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, boo
         Detour detour = routeTransition(start, end);
         if (!detour.bumps.empty()) detours_.push_back(std::move(detour));
     }
+    // The track again on the postures as drawn (the detours and the touches settled on the first
+    // track's arms): outside its blends the arm takes the solver's own elbow there, so the blends
+    // must be found where that elbow jumps, detours included.
+    if (trackElbows) {
+        elbows_ = ElbowTrack();
+        elbows_ = ElbowTrack(*rig_, timeline_.durationSeconds, [this](double t) { return postureAt(t); });
+    }
 }
 
 PoseReport TimelineClip::arms(const SignerPosture& posture) const {

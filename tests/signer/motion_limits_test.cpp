@@ -293,7 +293,7 @@ TEST(MotionLimits, EveryStoryFrameKeepsItsWristsAndElbowsWithinTheBodysLimits) {
 // 10-50° further from what they ask. Those signs' orientations at the wrist's limits are the
 // data's to change (the elbow then needs no fast turn).
 // Run with --gtest_also_run_disabled_tests.
-TEST(MotionLimits, DISABLED_EveryStoryFrameTurnsItsElbowsSmoothly) {
+TEST(MotionLimits, EveryStoryFrameTurnsItsElbowsSmoothly) {
     const Fixture& f = fixture();
     motion::MotionPeaks peaks;
     for (std::size_t i = 0; i < f.clips.size(); ++i) motion::measureClip(f.signer.rig(), *f.clips[i], f.names[i], 60.0, peaks);
