@@ -8,11 +8,13 @@
 // choice is an argmin: where two basins of its cost trade places (a hand orientation at the
 // wrist's limits) it jumps 40-57° between two 60 fps frames, and two keys whose elbows lie
 // ~100° apart 0.1 s from each other turn it 30-50° a frame. The track samples that choice on a
-// fixed grid of the clip's own time (kElbowTrackHz, the same instants at every frame rate) and
-// follows it no faster than kElbowTurnDegPerSecond, turning from one sample toward the next;
-// an instant between two samples takes their normalised blend. The arm then follows the track
-// (SignerPosture::followElbowHint). The track is a function of the clip alone, computed once.
-// Measured on the default stories (2026-11-26): the elbow's turn 67° -> 13.9° a frame.
+// fixed grid of the clip's own time (kElbowTrackHz, the same instants at every frame rate).
+// Where it turns no faster than kElbowTurnDegPerSecond the arm keeps the solver's own elbow (a
+// touch or a hand's orientation exact there); where it turns faster, the elbow turns at a
+// constant rate from the solver's elbow before the jump to the solver's elbow after it, over a
+// stretch centred on the jump and as long as that turn needs (a blend between the two branches,
+// not a lag behind the later one). The track is a function of the clip alone, computed once.
+// Measured on the default stories (2026-11-26): the elbow's turn 67° -> 12.2° a 60 fps frame.
 #include "signer/signer_pose.hpp"
 
 #include <functional>
@@ -24,23 +26,36 @@ namespace signstim::signer {
 // (t·60 whole), so a 60 fps frame falls on a sample.
 inline constexpr double kElbowTrackHz = 240.0;
 // [D] How fast the elbow may turn: 720°/s, 12° a frame at 60 fps (the motion tests' bound is 15°
-// about the moving shoulder-wrist axis). Where the keys ask the elbow to turn faster, it lags
-// and the forearm and wrist take up the hand's orientation within their limits — which, at the
-// limits, turns the hand from what the sign asks (why TimelineClip does not track by default).
+// about the moving shoulder-wrist axis). Within a blend the forearm and wrist take up the hand's
+// orientation within their limits, so the hand may turn from what the sign asks for that while.
 inline constexpr double kElbowTurnDegPerSecond = 720.0;
 
 class ElbowTrack {
 public:
+    // A stretch of samples [from, to] where the elbow turns from the solver's at `from` to the
+    // solver's at `to` at a constant rate about the moving shoulder-wrist axis; its elbow at
+    // each of those samples.
+    struct Blend {
+        std::size_t from = 0, to = 0;
+        std::vector<glm::vec3> elbows;
+    };
+    // The solver's elbow (ArmPose::elbowDirection) and shoulder-wrist axis (unit) at every sample.
+    struct Samples {
+        std::vector<glm::vec3> elbows, axes;
+    };
+
     ElbowTrack() = default;
     // `posture(t)` gives the clip's posture with the keys' elbow hints; the track samples the
     // arm solver's elbow there on [0, durationSeconds].
     ElbowTrack(const SignerRig& rig, double durationSeconds, const std::function<SignerPosture(double)>& posture);
-    // Sets `posture`'s elbow hints to the track at `seconds` and has the arm follow them (a
-    // default-constructed track leaves the posture as it is).
+    // Inside a blend, sets `posture`'s elbow hint of that arm to the blend at `seconds` and has
+    // the arm follow it; elsewhere (and for a default-constructed track) leaves the posture as it
+    // is: the solver's own elbow.
     void apply(double seconds, SignerPosture& posture) const;
 
 private:
-    std::vector<glm::vec3> right_, left_;
+    std::size_t samples_ = 0;
+    std::vector<Blend> rightBlends_, leftBlends_;
 };
 
 }  // namespace signstim::signer

@@ -404,7 +404,7 @@ hand::ArmPose SignerRig::solveArm(hand::Side side, const SignerPosture& posture)
     const hand::ArmTarget target = (right ? posture.rightWrist : posture.leftWrist).value_or(restingTarget(side));
     hand::ArmSolveOptions options;
     options.previousElbowDirection = right ? posture.rightElbowHint : posture.leftElbowHint;
-    options.maxSwivelStepDeg = posture.followElbowHint ? 0.0f : kElbowHintWindowDeg;
+    options.maxSwivelStepDeg = (right ? posture.followRightElbowHint : posture.followLeftElbowHint) ? 0.0f : kElbowHintWindowDeg;
     return armMemo_->solve(raisedArm(side, posture.nonManual), target, options);
 }
 

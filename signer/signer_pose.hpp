@@ -137,11 +137,11 @@ struct SignerPosture {
     std::optional<glm::vec2> headDeg;
     // Where each elbow should be (hand::ArmPose::elbowDirection, body frame), blended from the
     // elbows the clip's keys give: the arm solver looks for the swivel within
-    // kElbowHintWindowDeg of it (or takes it, followElbowHint). Absent: the solver's rule of
+    // kElbowHintWindowDeg of it (or takes it, follow*ElbowHint). Absent: the solver's rule of
     // the target alone.
     std::optional<glm::vec3> rightElbowHint, leftElbowHint;
     // The elbows at the hints themselves, no search (a clip's elbow track, signer/elbow_track.hpp).
-    bool followElbowHint = false;
+    bool followRightElbowHint = false, followLeftElbowHint = false;
     NonManualPosture nonManual;  // face, head, torso and shoulders
 };
 

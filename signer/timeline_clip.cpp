@@ -98,16 +98,6 @@ TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, boo
     rightTouch_.assign(timeline_.right.size(), glm::vec3(0.0f));
     leftTouch_.assign(timeline_.left.size(), glm::vec3(0.0f));
     settleTouches();
-    // The elbows' track (signer/elbow_track.hpp): the arm solver's elbows on the settled wrists,
-    // no faster than an arm turns. From here on every posture follows it (straightPostureAt):
-    // the touches are settled again on the arms as they will be drawn, and the transitions routed.
-    if (trackElbows) {
-        elbows_ = ElbowTrack(*rig_, timeline_.durationSeconds, [this](double t) { return straightPostureAt(t); });
-        rightTouch_.assign(timeline_.right.size(), glm::vec3(0.0f));
-        leftTouch_.assign(timeline_.left.size(), glm::vec3(0.0f));
-        touchSpans_.clear();
-        settleTouches();
-    }
     const std::vector<stimuli::TimelineKey>& keys = timeline_.right;
     for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
         const double start = keys[k].timeSeconds, end = keys[k + 1].timeSeconds;
@@ -115,6 +105,13 @@ TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, boo
         Detour detour = routeTransition(start, end);
         if (!detour.bumps.empty()) detours_.push_back(std::move(detour));
     }
+    // The elbows' track (signer/elbow_track.hpp): the arm solver's elbows on the postures as
+    // drawn (touches settled, detours routed), blended across their jumps; from here on every
+    // posture follows it (straightPostureAt). The touches and the detours stay those of the
+    // solver's own arms, as the timeline's pacer saw them: settled and routed again on the
+    // blended arms, a verb slot's wrists reached 2.68 m/s (MEET point s=-0.5 o=-1; measured
+    // 2026-11-26). Outside a blend the arms are the solver's, so those touches hold there.
+    if (trackElbows) elbows_ = ElbowTrack(*rig_, timeline_.durationSeconds, [this](double t) { return postureAt(t); });
 }
 
 PoseReport TimelineClip::arms(const SignerPosture& posture) const {

@@ -62,10 +62,9 @@ class Signer;
 class TimelineClip final : public Clip {
 public:
     // The keys carry their hand controls (resolved by the timeline's builder). `trackElbows`:
-    // the elbows follow an elbow track (signer/elbow_track.hpp); false (for now the default:
-    // issue 21, the track's lag sinks COOK and IX -> EMAIL, see motion_limits_test.cpp), the
-    // arm solver's choice near the keys' elbows at each instant.
-    TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, bool trackElbows = false);
+    // the elbows follow an elbow track (signer/elbow_track.hpp: the solver's elbow, blended
+    // across its jumps); false, the arm solver's choice near the keys' elbows at each instant.
+    TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, bool trackElbows = true);
 
     double durationSeconds() const override { return timeline_.durationSeconds; }
     SignerPosture postureAt(double seconds) const override;
