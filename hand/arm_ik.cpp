@@ -275,7 +275,10 @@ ArmPose solveArm(const ArmModel& arm, const ArmTarget& target, const ArmSolveOpt
                                         rangeExcessDeg(atHint.flexionDeg, arm.limits.wristFlexion) +
                                         rangeExcessDeg(atHint.ulnarDeviationDeg, arm.limits.wristUlnarDeviation);
                 const float stepDeg = std::max(options.maxSwivelStepDeg, 0.5f);
-                const float yieldDeg = std::max(0.0f, options.hintYieldPerWristDeg) * excessDeg;
+                // [D] The first 15° beyond the wrist limits do not widen it: the hint keeps the
+                // elbow where the wrist is only a little short (wider, the hands of story 06's
+                // IX -> EMAIL met 14 mm deep at the transition).
+                const float yieldDeg = std::max(0.0f, options.hintYieldPerWristDeg) * std::max(0.0f, excessDeg - 15.0f);
                 const float step = std::min(stepDeg + yieldDeg, std::max(stepDeg, options.swivelWindowDeg)) * kDeg;
                 swivel = searchSwivel(g, previous - step, previous + step, 1.0f * kDeg);
             }
