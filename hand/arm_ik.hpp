@@ -32,7 +32,13 @@ namespace signstim::hand {
 // Anatomical limits of one arm, degrees. [S] Clinical ranges of motion (AAOS / Norkin &
 // White), trimmed to what signing uses; every limit is a parameter.
 struct ArmLimits {
-    // Elbow flexion: 0 = straight. Max ~145–150° (soft tissue stops it).
+    // Elbow flexion: 0 = straight. [S] Active flexion 0–150° (American Academy of
+    // Orthopaedic Surgeons, Joint Motion: Method of Measuring and Recording, 1965; Norkin &
+    // White, Measurement of Joint Motion), the last degrees against the soft tissue of a
+    // forearm pressed to the upper arm. 145° [D]: tried at 150° (issue 22), the wrist comes
+    // 22 mm nearer the shoulder, but the face signs then miss their orientation by more
+    // (SISTER 48 -> 53°, SOON 63 -> 70°, DRINK 0 -> 25°) and SISTER's contact by 25 mm more:
+    // the shortfall of those signs is the wrist's turn, not the elbow's reach.
     AngleRange elbowFlexion{0.0f, 145.0f};
     // Shoulder: elevation of the upper arm from hanging straight down (0) to overhead (180).
     AngleRange shoulderElevation{0.0f, 170.0f};
@@ -94,6 +100,12 @@ struct ArmSolveOptions {
     // max(shoulder, wrist) (issue 21), the swivel moved to the nearest that does.
     std::optional<glm::vec3> previousElbowDirection;
     float maxSwivelStepDeg = 20.0f;
+    // [D] The window yields where the hand's orientation is out of the wrist's reach at the
+    // previous elbow: it widens by this many degrees per degree the wrist angles there exceed
+    // their limits (up to swivelWindowDeg), so a hint cannot hold the elbow where the palm
+    // cannot turn as asked (issue 22: FORGET, REMEMBER). A rule of the target and the hint
+    // alone, continuous in both, so a pose stays a pure function of its instant.
+    float hintYieldPerWristDeg = 1.0f;
     // Without a previous elbow: the swivel is sought only within this angle of the natural
     // pole [D]. The rule of the target that picks the elbow (issue 21: a pose is a function of
     // its instant, never of the last frame): the elbow stays on the low, outer side of the

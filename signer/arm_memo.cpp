@@ -8,10 +8,10 @@ namespace {
 // The sizes of the inputs whose fields the key lists (x86-64, gcc and clang): a field added to
 // one of them changes its size, and the memory is bypassed until the key lists it too.
 constexpr bool kKnownSizes = sizeof(hand::ArmModel) == 92 && sizeof(hand::ArmTarget) == 28 &&
-                             sizeof(hand::ArmSolveOptions) == 44 && sizeof(hand::ArmLimits) == 48;
+                             sizeof(hand::ArmSolveOptions) == 48 && sizeof(hand::ArmLimits) == 48;
 
 struct KeyWriter {
-    std::array<std::uint32_t, 41>& key;
+    std::array<std::uint32_t, 42>& key;
     std::size_t at = 0;
     void add(float v) {
         std::uint32_t bits;
@@ -70,6 +70,7 @@ hand::ArmPose ArmMemo::solve(const hand::ArmModel& arm, const hand::ArmTarget& t
     key[w.at++] = options.previousElbowDirection ? 1u : 0u;
     w.add(options.previousElbowDirection.value_or(glm::vec3(0.0f)));
     w.add(options.maxSwivelStepDeg);
+    w.add(options.hintYieldPerWristDeg);
     w.add(options.swivelWindowDeg);
     w.add(options.poleWeight);
     w.add(options.wristComfortWeight);

@@ -27,7 +27,7 @@ public:
 
 private:
     // 32-bit words: the inputs' fields, floats by their bits.
-    using Key = std::array<std::uint32_t, 41>;
+    using Key = std::array<std::uint32_t, 42>;
     struct KeyHash {
         std::size_t operator()(const Key& key) const;
     };
