@@ -105,7 +105,10 @@ struct ArmSolveOptions {
     // their limits (up to swivelWindowDeg), so a hint cannot hold the elbow where the palm
     // cannot turn as asked (issue 22: FORGET, REMEMBER). A rule of the target and the hint
     // alone, continuous in both, so a pose stays a pure function of its instant.
-    float hintYieldPerWristDeg = 1.0f;
+    // Off (0) by default: with the elbow track (signer/elbow_track.hpp) blending across the jumps
+    // the yield makes, story 07's ASK -> GUS took a hand 10-16 mm into the body (point, vector);
+    // at 1 it gave FORGET 66->53 deg, REMEMBER 38->32, WILL 48->39 without the track.
+    float hintYieldPerWristDeg = 0.0f;
     // Without a previous elbow: the swivel is sought only within this angle of the natural
     // pole [D]. The rule of the target that picks the elbow (issue 21: a pose is a function of
     // its instant, never of the last frame): the elbow stays on the low, outer side of the
