@@ -70,7 +70,9 @@ double pacedTransitionSeconds(const SignerRig& rig, const stimuli::TransitionQue
         else
             for (const auto& [start, stop] : {std::pair{0.0, hold}, std::pair{hold + seconds, end}})
                 timeline.spans.push_back({stimuli::SpanKind::Sign, start, stop, "", 0, 0, start, stop, {true, false}, 0});
-        const TimelineClip clip(rig, std::move(timeline));
+        // No elbow track: the pacer reads the reached wrists, which the elbow's swivel never moves
+        // (SignerRig::reachedWristMm), so a track would be built for nothing on every try.
+        const TimelineClip clip(rig, std::move(timeline), /*trackElbows=*/false);
         const auto samples = static_cast<int>(std::ceil(seconds * kSamplesPerSecond));
         double peak = 0.0;
         glm::vec3 right(0.0f), left(0.0f);
