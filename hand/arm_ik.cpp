@@ -270,15 +270,18 @@ ArmPose solveArm(const ArmModel& arm, const ArmTarget& target, const ArmSolveOpt
                 // search (a search's argmin can change basin between neighbouring instants).
                 swivel = previous;
             } else {
-                const WristAngles atHint = evaluate(g, previous, false).wrist;
-                const float excessDeg = rangeExcessDeg(atHint.supinationDeg, arm.limits.supination) +
-                                        rangeExcessDeg(atHint.flexionDeg, arm.limits.wristFlexion) +
-                                        rangeExcessDeg(atHint.ulnarDeviationDeg, arm.limits.wristUlnarDeviation);
                 const float stepDeg = std::max(options.maxSwivelStepDeg, 0.5f);
-                // [D] The first 15° beyond the wrist limits do not widen it: the hint keeps the
-                // elbow where the wrist is only a little short (wider, the hands of story 06's
-                // IX -> EMAIL met 14 mm deep at the transition).
-                const float yieldDeg = std::max(0.0f, options.hintYieldPerWristDeg) * std::max(0.0f, excessDeg - 15.0f);
+                float yieldDeg = 0.0f;
+                if (options.hintYieldPerWristDeg > 0.0f) {  // off by default: no evaluation spent on it
+                    const WristAngles atHint = evaluate(g, previous, false).wrist;
+                    const float excessDeg = rangeExcessDeg(atHint.supinationDeg, arm.limits.supination) +
+                                            rangeExcessDeg(atHint.flexionDeg, arm.limits.wristFlexion) +
+                                            rangeExcessDeg(atHint.ulnarDeviationDeg, arm.limits.wristUlnarDeviation);
+                    // [D] The first 15° beyond the wrist limits do not widen it: the hint keeps the
+                    // elbow where the wrist is only a little short (wider, the hands of story 06's
+                    // IX -> EMAIL met 14 mm deep at the transition).
+                    yieldDeg = options.hintYieldPerWristDeg * std::max(0.0f, excessDeg - 15.0f);
+                }
                 const float step = std::min(stepDeg + yieldDeg, std::max(stepDeg, options.swivelWindowDeg)) * kDeg;
                 swivel = searchSwivel(g, previous - step, previous + step, 1.0f * kDeg);
             }
