@@ -30,6 +30,9 @@ VerbClip::VerbClip(const SignerRig& rig, const stimuli::HandshapeLibrary& shapes
             elbows.push_back(hand::solveArm(rig.arm(side), armTargetFromSigningSpace(key.pose)).elbowDirection);
         keyElbows_.push_back(std::move(elbows));
     }
+    // The elbows' track (signer/elbow_track.hpp), as a story's (TimelineClip): sampled on the
+    // postures without it, then followed by every posture (postureAt).
+    elbows_ = ElbowTrack(rig, durationSeconds(), [this](double t) { return postureAt(t); });
 }
 
 double VerbClip::durationSeconds() const {
@@ -75,6 +78,7 @@ SignerPosture VerbClip::postureAt(double seconds) const {
             posture.leftElbowHint = elbow;
         }
     }
+    elbows_.apply(seconds, posture);  // the arms follow the elbows' track (none while it is made)
     return posture;
 }
 

@@ -4,7 +4,12 @@
 // A clip is: a lead-in in which the hands rise from rest to the verb's first keyframe, the
 // verb itself, a hold on its last keyframe, and nothing else — so that the four versions of
 // a verb (point, vector, animator, uninflected) differ only in the verb.
+//
+// The elbows follow an elbow track as a story's do (signer/elbow_track.hpp; issue 21: the
+// swivel changes smoothly): the arm solver's elbow near the keyframes' elbows, blended across
+// its jumps. The track is a function of the clip alone, so the pose stays a function of t.
 #include "signer/clip.hpp"
+#include "signer/elbow_track.hpp"
 #include "stimuli/story/handshapes.hpp"
 #include "stimuli/verbs/verb_synthesis.hpp"
 
@@ -38,6 +43,7 @@ private:
     // Per hand track: the solver's elbow at rest and at each keyframe (SignerPosture's hints).
     std::vector<glm::vec3> restElbows_;
     std::vector<std::vector<glm::vec3>> keyElbows_;
+    ElbowTrack elbows_;  // empty while it is made (the postures it samples are the solver's own)
 };
 
 }  // namespace signstim::signer

@@ -241,8 +241,8 @@ const VerbGrid& verbGrid() {
 // the clip plays the performance as a story's verb slot does, slowed to SPEC §6.2 on the posed
 // wrists' path (stimuli::paceVerbPerformance): 2.03 m/s (COPY point s=0.9 o=-1.0; the elbow
 // 0 mm above its bound, the wrists' angles at the arms' limits, within the cited ranges;
-// 2562 instances, 33 animator clips, ~17 s of CPU; measured 2026-11-26). The elbow's swivel
-// is DISABLED_EveryVerbInstanceTurnsItsElbowsSmoothly's.
+// 2562 instances, 33 animator clips; measured 2026-11-26; the same with the verb clip's elbow
+// track). The elbow's swivel is EveryVerbInstanceTurnsItsElbowsSmoothly's.
 TEST(MotionLimits, EveryVerbInstanceKeepsItsWristsAndElbowsWithinTheBodysLimits) {
     const VerbGrid& grid = verbGrid();
     EXPECT_GT(grid.animatorClips, 0u);
@@ -251,11 +251,11 @@ TEST(MotionLimits, EveryVerbInstanceKeepsItsWristsAndElbowsWithinTheBodysLimits)
     EXPECT_LE(grid.peaks.wristSpeedMmPerSecond.value, kWristSpeedMmPerSecond) << grid.peaks.wristSpeedMmPerSecond.where;
 }
 
-// Fails today (issue 21, open): a story's frames are smoothed by the elbow track
-// (signer/elbow_track.hpp; EveryStoryFrameTurnsItsElbowsSmoothly passes), a verb clip
-// (signer::VerbClip) has no track yet, and its elbow turns 66.0° about the shoulder-wrist axis in one frame (COPY point s=1.0 o=-0.9 right
-// at 0.917 s; measured 2026-11-26, the verb clip paced). Run with --gtest_also_run_disabled_tests.
-TEST(MotionLimits, DISABLED_EveryVerbInstanceTurnsItsElbowsSmoothly) {
+// Issue 21. Before the verb clip had an elbow track (signer::VerbClip, as a story's:
+// signer/elbow_track.hpp) its elbow turned 66.0° about the shoulder-wrist axis in one frame
+// (COPY point s=1.0 o=-0.9 right at 0.917 s, the verb clip paced); with it 12.1° (MEET point
+// s=0.9 o=-0.9 right at 0.783 s; measured 2026-11-26), the bound the stories keep.
+TEST(MotionLimits, EveryVerbInstanceTurnsItsElbowsSmoothly) {
     const VerbGrid& grid = verbGrid();
     EXPECT_LE(grid.peaks.swivelStepDegPerFrame.value, kSwivelStepDegPerFrame) << grid.peaks.swivelStepDegPerFrame.where;
 }
@@ -286,6 +286,47 @@ TEST(FrameRateIndependence, ThePoseAtAnInstantIsTheSameAtEveryFrameRate) {
             }
         }
         EXPECT_GT(compared, 0u) << f.names[i];
+    }
+}
+
+// The verb clip's elbow track keeps its pose a function of t: COPY point s=1.0 o=-0.9, whose
+// elbow the track blends across a 66° jump (EveryVerbInstanceTurnsItsElbowsSmoothly), and GIVE
+// vector s=-0.5 o=0.8, posed at each rate as `signstim verb --out` does and compared with 60 fps
+// at the instants they share.
+TEST(FrameRateIndependence, AVerbClipsPoseAtAnInstantIsTheSameAtEveryFrameRate) {
+    const SignerAndScenes& f = signerAndScenes();
+    const stimuli::StoryWorld& w = f.world;
+    const stimuli::VerbSources sources{&w.verbs, &w.models, kScenes / "animator", &w.shapes};
+    stimuli::TimelineSources pacing;
+    pacing.shapes = &w.shapes;
+    pacing.transitions = signer::transitionPacer(f.signer.rig());
+    struct Instance {
+        const char* verb;
+        stimuli::VerbVersion version;
+        double s, o;
+    };
+    for (const Instance& in : {Instance{"COPY", stimuli::VerbVersion::Point, 1.0, -0.9},
+                               Instance{"GIVE", stimuli::VerbVersion::Vector, -0.5, 0.8}}) {
+        const signer::VerbClip clip(f.signer.rig(), w.shapes,
+                                    stimuli::paceVerbPerformance(stimuli::synthesizeVerb(sources, in.verb, in.version, in.s, in.o), pacing));
+        const signer::ClipPoser poser(f.signer.rig(), clip);
+        const auto total60 = static_cast<std::uint64_t>(std::floor(clip.durationSeconds() * 60.0 + 1e-9)) + 1;
+        std::vector<render::Pose> at60;
+        for (std::uint64_t k = 0; k < total60; ++k) at60.push_back(poser.next(static_cast<double>(k) / 60.0));
+        std::size_t compared = 0;
+        for (const auto& [num, den] : std::vector<std::pair<double, double>>{{15, 1}, {24, 1}, {25, 1}, {30, 1}, {30000, 1001}}) {
+            const double fps = num / den;
+            const auto total = static_cast<std::uint64_t>(std::floor(clip.durationSeconds() * fps + 1e-9)) + 1;
+            for (std::uint64_t k = 0; k < total; ++k) {
+                const double t = static_cast<double>(k) * den / num;
+                const double frame60 = static_cast<double>(k) * den * 60.0 / num;
+                if (std::fabs(frame60 - std::round(frame60)) > 1e-9 || std::round(frame60) >= total60) continue;
+                ++compared;
+                ASSERT_TRUE(samePose(poser.next(t), at60[static_cast<std::size_t>(std::round(frame60))], 1e-6))
+                    << in.verb << " at " << t << " s, " << fps << " fps";
+            }
+        }
+        EXPECT_GT(compared, 0u) << in.verb;
     }
 }
 
