@@ -34,6 +34,7 @@ struct MotionPeaks {
     Peak hintStepDegPerFrame;        // turn of the elbow hint (the keys' elbows blended), per 60 fps frame
     Peak wristFlexionDeg, wristExtensionDeg, ulnarDeviationDeg, radialDeviationDeg, supinationDeg, pronationDeg;
     Peak wristSpeedMmPerSecond;      // the drawn wrist (the arm solution's)
+    Peak reachShortMm;               // how far the drawn wrist falls short of its target (ArmPose::reachErrorMm)
     Peak headYawDeg, eyeYawDeg, eyePitchDeg, headSpeedDegPerSecond;
 
     void print(const char* title) const {
@@ -51,6 +52,7 @@ struct MotionPeaks {
         line("supination (deg)", supinationDeg);
         line("pronation (deg)", pronationDeg);
         line("wrist speed (mm/s)", wristSpeedMmPerSecond);
+        line("wrist short of target (mm)", reachShortMm);
         line("head yaw (deg)", headYawDeg);
         line("eye-in-orbit yaw (deg)", eyeYawDeg);
         line("eye-in-orbit pitch (deg)", eyePitchDeg);
@@ -90,6 +92,7 @@ inline void measureClip(const signer::SignerRig& rig, const signer::Clip& clip, 
             peaks.radialDeviationDeg.take(-a.wristUlnarDeviationDeg, where);
             peaks.supinationDeg.take(a.supinationDeg, where);
             peaks.pronationDeg.take(-a.supinationDeg, where);
+            peaks.reachShortMm.take(a.reachErrorMm, where);
             if (hasPrevious) {
                 const hand::ArmPose& p = right ? previous.right : previous.left;
                 peaks.elbowSwingDegPerFrame.take(angleDeg(a.elbowMm - a.shoulderMm, p.elbowMm - p.shoulderMm) * fps / 60.0, where);
