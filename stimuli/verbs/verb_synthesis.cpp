@@ -185,9 +185,14 @@ VerbPerformance synthesizeUncheckedVerb(const VerbSources& sources, const std::s
                                                                                         : std::string("<verb models>"),
                                  0, "verb",
                                  "no trained model for " + verb.name + "; run `signstim train CORPUS.csv --out MODELS.json`");
-            const auto poses = version == VerbVersion::Point ? predictPoint(*model, subject, object)
-                                                             : predictVector(*model, subject, object);
-            checkPredictedPoses(*model, sources.models->sourceFile, verb, subject, object, poses);
+            // A verb whose hands come each from its referent's side (verbs.json "handsBySide",
+            // MEET): where the subject is left of the object, the pair the other way round, so
+            // the arms do not cross and the hands do not start in each other (issue 21).
+            const bool swapped = verb.handsBySide && subject < object;
+            const double asked = swapped ? object : subject, toward = swapped ? subject : object;
+            const auto poses = version == VerbVersion::Point ? predictPoint(*model, asked, toward)
+                                                             : predictVector(*model, asked, toward);
+            checkPredictedPoses(*model, sources.models->sourceFile, verb, asked, toward, poses);
             VerbPerformance performance = performanceFromPoses(verb, version, subject, object, poses);
             performance.handshapeFile = sources.verbs->sourceFile;
             return performance;

@@ -193,6 +193,15 @@ VerbLibrary parseVerbLibrary(const JsonSource& source) {
             verb.passes = passes.get<int>();
         }
         verb.contact = readSignContact(source, item, anchors, pointer);
+        if (item.contains("handsBySide")) {
+            const nlohmann::json& bySide = item["handsBySide"];
+            if (!bySide.is_boolean())
+                source.fail({"\"" + verb.name + "\"", "\"handsBySide\""}, pointer + "/handsBySide", "expected true or false");
+            verb.handsBySide = bySide.get<bool>();
+            if (verb.handsBySide && (verb.hands.size() != 2 || verb.objectOnly()))
+                source.fail({"\"" + verb.name + "\"", "\"handsBySide\""}, pointer + "/handsBySide",
+                            "only a two-handed verb with a subject and an object has a hand for each referent");
+        }
         const nlohmann::json& citation = member(source, item, "citation", anchors, pointer);
         for (HandSide side : verb.hands) {
             const std::string handName = toString(side);

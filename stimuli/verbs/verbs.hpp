@@ -53,6 +53,13 @@ struct VerbDefinition {
     // The keyframe path is played forth and back this many times in all (SCOLD wags: 3).
     int passes = 1;
     SignContact contact;
+    // "handsBySide": each hand stands for one referent and starts at it from its own side (MEET:
+    // the hands come from the subject and the object and meet). A model trained on examples
+    // whose right hand goes to the subject crosses the arms where the subject is left of the
+    // object, and the hands start in or pass through each other (issue 21); such a verb's
+    // inflected versions ask the model for the pair the other way round there (s < o), so the
+    // right hand starts at the right-hand referent.
+    bool handsBySide = false;
     // citation[hand][keyframe]; every hand has the same keyframe times.
     std::vector<std::vector<VerbKeyframe>> citation;
 

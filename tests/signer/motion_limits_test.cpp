@@ -7,7 +7,9 @@
 #include "motion_sampling.hpp"
 #include "tests/test_breadth.hpp"
 
+#include "signer/clearance.hpp"
 #include "signer/clip.hpp"
+#include "signer/hand_capsules.hpp"
 #include "signer/signer.hpp"
 #include "signer/timeline_clip.hpp"
 #include "signer/verb_clip.hpp"
@@ -21,6 +23,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <thread>
 
@@ -481,4 +484,230 @@ TEST(MotionLimits, EveryVerbSlotKeepsItsWristsWithinSpec62) {
     std::printf("%zu verb slots: peak wrist speed %.0f mm/s at %s\n", slots, peaks.wristSpeedMmPerSecond.value,
                 peaks.wristSpeedMmPerSecond.where.c_str());
     EXPECT_LE(peaks.wristSpeedMmPerSecond.value, kWristSpeedMmPerSecond) << peaks.wristSpeedMmPerSecond.where;
+}
+
+// ---- The hands keep clear of each other and of the body in every verb instance ----
+// Issue 21, item 2 ("the hands never pass through each other or the body"), on the verb grid:
+// the rules StoryClearance holds on the default stories (signer/clearance.hpp: checkClearance
+// and its thresholds) on every 60 fps frame of every verb instance, each played as a story's
+// verb slot plays it (verbSlotTimeline): its lead-in a transition from rest, routed around the
+// hands and the body; its keys and the hold on the last one the verb, which may touch only as
+// verbs.json says its citation form does (MEET, COPY, EMAIL and SEND the hands, settled as in
+// a story; TELL the body). Its own sweep, apart from verbGrid()'s motion figures.
+namespace {
+
+// A verb instance as a story's verb slot plays it (a one-item timeline, synthetic): the hands
+// rise from rest in ClipTiming's lead-in, play the paced performance, and hold its last keys
+// for ClipTiming's hold (as `signstim verb --out` times it); a touch of the hands is settled
+// (TimelineClip::settleTouches) as in any story.
+stimuli::Timeline verbSlotTimeline(const stimuli::VerbPerformance& performance, const stimuli::HandshapeLibrary& shapes) {
+    const signer::ClipTiming timing;
+    const double keysStart = timing.leadInSeconds, keysEnd = keysStart + performance.durationSeconds;
+    stimuli::Timeline timeline;
+    timeline.story = "verb grid";
+    timeline.version = stimuli::toString(performance.version);
+    timeline.durationSeconds = keysEnd + timing.holdSeconds;
+    for (const stimuli::HandSide side : {stimuli::HandSide::Right, stimuli::HandSide::Left}) {
+        std::vector<stimuli::TimelineKey>& keys = side == stimuli::HandSide::Right ? timeline.right : timeline.left;
+        stimuli::TimelineKey rest;
+        rest.rest = true;
+        keys.push_back(rest);
+        if (const stimuli::HandTrack* track = performance.hand(side)) {
+            for (const stimuli::PerformanceKeyframe& k : track->keyframes) {
+                stimuli::TimelineKey key;
+                key.timeSeconds = keysStart + k.timeSeconds;
+                key.pose = k.pose;
+                key.handshape = k.handshape;
+                key.controls = shapes.at(k.handshape).controls;
+                keys.push_back(key);
+            }
+        } else {
+            rest.timeSeconds = keysStart;
+            keys.push_back(rest);
+        }
+        stimuli::TimelineKey last = keys.back();
+        last.timeSeconds = timeline.durationSeconds;
+        keys.push_back(last);
+    }
+    timeline.spans = {{stimuli::SpanKind::Rest, 0.0, 0.0, "rest", -1, -1, 0.0, 0.0, {}},
+                      {stimuli::SpanKind::Verb, 0.0, timeline.durationSeconds, performance.verb, 0, 0, keysStart,
+                       timeline.durationSeconds, performance.contact}};
+    timeline.gaze = {{0.0, std::nullopt}, {timeline.durationSeconds, std::nullopt}};
+    return timeline;
+}
+
+struct VerbClearanceBreak {
+    std::string verb, version, text;
+    bool hands = true;
+    float gapMm = 0.0f;
+};
+
+struct VerbGridClearance {
+    std::map<std::string, signer::ClearanceExtreme> hands, body;  // per verb: the closest approach in the verb
+    std::map<std::string, std::string> handsAt, bodyAt;
+    std::vector<VerbClearanceBreak> breaks;  // the deepest frame of each offending stretch
+    std::size_t clips = 0, frames = 0;
+
+    void take(const VerbGridClearance& other) {
+        clips += other.clips;
+        frames += other.frames;
+        breaks.insert(breaks.end(), other.breaks.begin(), other.breaks.end());
+        for (const bool h : {true, false})
+            for (const auto& entry : h ? other.hands : other.body) {
+                auto& into = h ? hands : body;
+                if (!into.count(entry.first) || entry.second.gapMm < into[entry.first].gapMm) {
+                    into[entry.first] = entry.second;
+                    (h ? handsAt : bodyAt)[entry.first] = (h ? other.handsAt : other.bodyAt).at(entry.first);
+                }
+            }
+    }
+};
+
+// Every frame of the slot at 60 fps (and its keys' ends), judged by the story's rules.
+void checkVerbSlotClearance(const signer::SignerRig& rig, const signer::TimelineClip& clip, const std::string& name,
+                            VerbGridClearance& out) {
+    const std::vector<signer::ClearanceFrame> frames = signer::clearanceFrames(rig, clip, 60.0);
+    out.frames += frames.size();
+    ++out.clips;
+    const signer::ClearanceSummary summary = signer::checkClearance(clip.timeline(), frames);
+    const stimuli::TimelineSpan& verb = clip.timeline().spans.back();
+    for (const bool hands : {true, false}) {
+        const signer::ClearanceExtreme& e = hands ? (verb.contact.hands ? summary.handsInContactSigns : summary.handsInSigns)
+                                                  : (verb.contact.body ? summary.bodyInContactSigns : summary.body);
+        auto& worst = hands ? out.hands : out.body;
+        if (worst.count(verb.label) && e.gapMm >= worst[verb.label].gapMm) continue;
+        worst[verb.label] = e;
+        char where[128];
+        std::snprintf(where, sizeof where, "%s at %.3f s", name.c_str(), e.seconds);
+        (hands ? out.handsAt : out.bodyAt)[verb.label] = where;
+    }
+    for (const signer::ClearanceViolation& v : summary.violations) {
+        char line[200];
+        std::snprintf(line, sizeof line, "%s: %s%s %.1f mm apart at %.3f s (at least %.1f allowed)", name.c_str(),
+                      v.transition ? "lead-in: " : "", v.hands ? "hands" : "hand and body", v.gapMm, v.seconds,
+                      v.allowedMm);
+        out.breaks.push_back({verb.label, clip.timeline().version, line, v.hands, v.gapMm});
+    }
+}
+
+// Verb instances whose hands still go deeper than the rules allow, held at their depth (mm, to
+// 0.5 mm) per verb, version and what they go into (the other hand, or the body); a break not
+// listed, or deeper, fails. Remove a line when its cause is fixed. Measured 2026-11-26 on this
+// sweep; the test's first run found 86 breaks, MEET's among them (point -13.8 mm at s=-1 o=0.5,
+// the moving-day story's -17.1 mm at s=-0.45 o=0.75): its hands start in each other where the
+// subject is left of the object, fixed by verbs.json "handsBySide" (now -2.0 mm, the settled
+// touch). Left, the hand in the body (hand-body, false), where an inflected path sweeps across
+// the signer (s and o far apart on either side: ASK, COPY, GIVE, SEND point s=+-1 o=-+1) or
+// a model's start lies at the chest (GIVE, SEND, EMAIL vector with s and o both far left): the
+// keyframes are turned about the torso pivot and the hand goes straight between them, a chord
+// that cuts into the torso (stimuli/verbs/verb_synthesis.cpp, sampleHand; the timeline's keys
+// alike) — a verb's path is not routed around the body as a transition is. And the hands'
+// touches that settling leaves deeper than kContactDepthToleranceMm (COPY, EMAIL: cf.
+// StoryClearance's kKnownTooDeep).
+struct KnownVerbBreak {
+    const char* verb;
+    const char* version;
+    bool hands;
+    float deepestMm;
+};
+const KnownVerbBreak kKnownVerbBreaks[] = {
+    {"ASK", "point", false, -63.0f},      // s=1.0 o=-1.0
+    {"ASK", "vector", false, -9.0f},      // s=0.2 o=0.6
+    {"COPY", "point", false, -61.0f},     // s=1.0 o=-1.0
+    {"COPY", "point", true, -22.0f},      // s=-1.0 o=0.5
+    {"COPY", "vector", true, -22.0f},     // s=-1.0 o=0.5
+    {"EMAIL", "animator", true, -16.0f},  // s=0.9 o=0.3
+    {"EMAIL", "point", true, -19.0f},     // s=1.0 o=0.0
+    {"EMAIL", "uninflected", true, -15.0f},
+    {"EMAIL", "vector", false, -21.0f},   // s=-1.0 o=-0.5
+    {"EMAIL", "vector", true, -21.0f},    // s=0.9 o=0.3 (a default story's instance)
+    {"GIVE", "point", false, -18.0f},     // s=1.0 o=-1.0
+    {"GIVE", "vector", false, -93.0f},    // s=-1.0 o=-0.8
+    {"SEND", "animator", false, -13.0f},  // s=0.9 o=-0.6
+    {"SEND", "point", false, -76.0f},     // s=-1.0 o=1.0
+    {"SEND", "vector", false, -43.0f},    // s=-1.0 o=-0.5
+    {"TELL", "point", false, -14.0f},     // o=1.0
+};
+
+}  // namespace
+
+// The sweep: all 8 verbs, subject and object over -1..1 in steps of 0.1 (s != o where the verb
+// has both), point and vector, with animator where its file exists (and point and vector
+// there); uninflected once per verb (the citation form, the same for every subject and
+// object). A verb that touches with both hands in steps of 0.5: settling a touch costs ~0.15 s
+// of CPU a clip, 15-40 times an untouched one (the arm solved for every way out it tries).
+// 2001 clips, ~37 s of CPU (gcc, RelWithDebInfo; measured 2026-11-26). Under
+// SIGNSTIM_TEST_BREADTH=sanitizer subject and object at -1, 0, 1, and the instances with
+// animator files: 191 clips, ~8 s of CPU before ASan's slowdown.
+TEST(MotionLimits, EveryVerbInstanceKeepsItsHandsOutOfEachOtherAndTheBody) {
+    const SignerAndScenes& f = signerAndScenes();
+    const stimuli::StoryWorld& w = f.world;
+    const std::filesystem::path animator = kScenes / "animator";
+    const stimuli::VerbSources sources{&w.verbs, &w.models, animator, &w.shapes};
+    test::noteSanitizerBreadth("verb instances with subject and object at -1, 0, 1, and those with animator files");
+    struct Instance {
+        const stimuli::VerbDefinition* verb;
+        stimuli::VerbVersion version;
+        int s, o;  // tenths
+    };
+    std::vector<Instance> instances;
+    for (const auto& verb : w.verbs.verbs) {
+        instances.push_back({&verb, stimuli::VerbVersion::Uninflected, 0, verb.objectOnly() ? 1 : 0});
+        const int step = verb.contact.hands ? 5 : 1;
+        for (int s = -10; s <= 10; ++s)
+            for (int o = -10; o <= 10; ++o) {
+                if (verb.objectOnly() ? s != 0 : s == o) continue;
+                const bool animated = std::filesystem::exists(animator / stimuli::animatorFileName(verb, s / 10.0, o / 10.0));
+                if (animated) instances.push_back({&verb, stimuli::VerbVersion::Animator, s, o});
+                // Point and vector on the grid, and where an animator's file is (the default
+                // stories' instances) in every breadth.
+                const bool onGrid = test::sanitizerBreadth() ? s % 10 == 0 && o % 10 == 0 : s % step == 0 && o % step == 0;
+                if (!onGrid && !animated) continue;
+                for (const stimuli::VerbVersion v : {stimuli::VerbVersion::Point, stimuli::VerbVersion::Vector})
+                    instances.push_back({&verb, v, s, o});
+            }
+    }
+    stimuli::TimelineSources pacing;
+    pacing.shapes = &w.shapes;
+    pacing.transitions = signer::transitionPacer(f.signer.rig());
+    const std::size_t threads = std::max(2u, std::thread::hardware_concurrency());
+    std::vector<VerbGridClearance> parts(threads);
+    const auto work = [&](std::size_t part) {
+        for (std::size_t i = part; i < instances.size(); i += threads) {
+            const Instance& in = instances[i];
+            const double s = in.s / 10.0, o = in.o / 10.0;
+            const signer::TimelineClip clip(
+                f.signer.rig(),
+                verbSlotTimeline(stimuli::paceVerbPerformance(stimuli::synthesizeVerb(sources, in.verb->name, in.version, s, o), pacing),
+                                 w.shapes));
+            char name[96];
+            std::snprintf(name, sizeof name, "%s %s s=%.1f o=%.1f", in.verb->name.c_str(), stimuli::toString(in.version).c_str(), s, o);
+            checkVerbSlotClearance(f.signer.rig(), clip, name, parts[part]);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (std::thread& t : pool) t.join();
+    VerbGridClearance all;
+    for (const VerbGridClearance& part : parts) all.take(part);
+    std::printf("%zu verb clips, %zu frames (60 fps); closest approach inside the verb (mm; negative: overlap):\n",
+                all.clips, all.frames);
+    for (const auto& entry : all.hands)
+        std::printf("  %-6s hands %7.1f (%s)  hand-body %7.1f (%s)\n", entry.first.c_str(), entry.second.gapMm,
+                    all.handsAt[entry.first].c_str(), all.body[entry.first].gapMm, all.bodyAt[entry.first].c_str());
+    std::sort(all.breaks.begin(), all.breaks.end(),
+              [](const VerbClearanceBreak& a, const VerbClearanceBreak& b) { return a.text < b.text; });
+    std::string found;
+    std::size_t unknown = 0;
+    for (const VerbClearanceBreak& b : all.breaks) {
+        bool known = false;
+        for (const KnownVerbBreak& k : kKnownVerbBreaks)
+            known = known || (b.verb == k.verb && b.version == k.version && b.hands == k.hands && b.gapMm >= k.deepestMm - 0.5f);
+        std::printf("  %s%s\n", known ? "" : "NEW: ", b.text.c_str());  // the record (ctest -V)
+        if (known) continue;
+        if (++unknown <= 40) found += "\n  " + b.text;
+    }
+    std::printf("%zu stretches break a rule (%zu of them not among kKnownVerbBreaks)\n", all.breaks.size(), unknown);
+    EXPECT_EQ(unknown, 0u) << found;
 }
