@@ -29,7 +29,7 @@ struct KnownPosed {
 };
 const KnownPosed kKnownPosed[] = {
     {"BOY", 0.0, 43}, {"SISTER", 68.4, 48}, {"BROTHER", 29.8, 33}, {"HUSBAND", 68.2, 0},
-    {"FORGET", 0.0, 67}, {"LOSE", 52.5, 0},
+    {"FORGET", 0.0, 67},
     {"HOW", 52.0, 0}, {"FAMILY", 45.7, 0}, {"REMEMBER", 50.2, 38}, {"SON", 165.1, 86},
     {"DAUGHTER", 165.1, 83}, {"WIFE", 64.0, 0}, {"BELIEVE", 64.0, 0}, {"SOON", 79.3, 63},
     {"BABY", 182.0, 41}, {"CHANGE", 70.0, 0}, {"DOOR", 59.8, 55},
