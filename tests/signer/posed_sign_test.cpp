@@ -33,7 +33,7 @@ const KnownPosed kKnownPosed[] = {
     {"HOW", 52.0, 0}, {"FAMILY", 45.7, 0}, {"REMEMBER", 50.2, 38}, {"SON", 165.1, 86},
     {"DAUGHTER", 165.1, 83}, {"WIFE", 64.0, 0}, {"BELIEVE", 64.0, 0}, {"SOON", 79.3, 63},
     {"BABY", 182.0, 41}, {"CHANGE", 70.0, 0}, {"DOOR", 59.8, 55},
-    {"WILL", 0.0, 48}, {"GET", 39.0, 0},
+    {"WILL", 0.0, 48}, {"GET", 10.7, 0},
     {"STUDENT", 0.0, 40},
 };
 
