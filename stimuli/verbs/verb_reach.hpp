@@ -6,8 +6,8 @@
 // 185 mm short (GIVE vector s=-1.0 o=0.9). A signer reaches toward such a locus with the elbow
 // bent, the hand on the line from the shoulder to it. So every keyframe of a performance is
 // drawn toward its hand's shoulder joint where it lies beyond the comfortable reach: a pure
-// function of the target (the shoulder and the arm's length), the same for all four versions,
-// so they still differ only in how they were synthesized.
+// function of the target (the shoulder and the arm's length), the same for the point and vector
+// versions, so they still differ only in how they were synthesized.
 //
 // stimuli/ knows nothing of the body: the reach comes in as a plain value from the signer's
 // rig (signer::signerReach), as the transition pacer does (TimelineSources).
@@ -62,7 +62,9 @@ struct SignerReach {
 glm::dvec3 withinComfortableReach(const glm::dvec3& positionMm, const ArmReach& arm, double comfortableFraction,
                                   double kneeFraction);
 
-// Every keyframe of every hand of `performance` within its arm's comfortable reach
+// The point and vector versions (what the models synthesize; the citation form and the animator
+// files are returned as they are: authored on a body, reached as written): every keyframe of
+// every hand of `performance` within its arm's comfortable reach
 // (withinComfortableReach); times, orientations and handshapes kept. The keyed path between
 // keyframes is a blend of their positions, so it stays inside the outer reach (a ball is
 // convex) — but a straight path can pass nearer the shoulder than the folded arm allows (COPY

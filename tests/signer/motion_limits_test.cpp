@@ -274,8 +274,8 @@ constexpr double kReachShortMm = 10.0;
 // elevated 78°; the animator file for that instance reaches with the elbow bent 29°); on a 0.2
 // grid of subject and object 339 clips fell more than 10 mm short (75 GIVE point, 53 ASK point,
 // 42 SEND point, 40 EMAIL point ...), the uninflected never. A story's verb slots the same:
-// story-11 point's GIVE, the left wrist 145 mm short at 12.25 s. Now every version's keyframes
-// are drawn within the signer's comfortable reach where they meet it (stimuli::withinReach,
+// story-11 point's GIVE, the left wrist 145 mm short at 12.25 s. Now the point and vector
+// versions' keyframes are drawn within the signer's comfortable reach where they meet it (stimuli::withinReach,
 // stimuli/verbs/verb_reach.hpp, given signer::signerReach): the far ones toward the shoulder,
 // within 0.9 of the arm; with that alone 60 mm were left (COPY point s=1.0 o=-1.0: the straight
 // path from the far left to the right side passes 128 mm from the right shoulder joint, nearer

@@ -55,6 +55,7 @@ TEST(VerbReach, DrawnDistanceGrowsWithTheTargetsDistanceAndIsContinuousAtTheKnee
 
 TEST(VerbReach, EveryKeyframeOfEveryHandIsWithinItsArmsReachAndNothingElseChanges) {
     VerbPerformance performance;
+    performance.version = VerbVersion::Point;
     for (HandSide side : {HandSide::Right, HandSide::Left}) {
         HandTrack track;
         track.side = side;
@@ -99,6 +100,7 @@ TEST(VerbReach, APathNearerTheShoulderThanTheFoldedArmAllowsIsMovedForwardWithBo
     reach.right = right;
     reach.left = left;
     VerbPerformance performance;
+    performance.version = VerbVersion::Vector;
     performance.contact.hands = true;
     HandTrack r{HandSide::Right, {{0.0, HandPose{{-338.0, 25.0, 217.0}, {}}, "B", 0, ""}, {0.55, HandPose{{333.0, 4.0, -8.0}, {}}, "B", 0, ""}}};
     HandTrack l{HandSide::Left, {{0.0, HandPose{{-314.0, -37.0, 102.0}, {}}, "B", 0, ""}, {0.55, HandPose{{-313.0, -39.0, 112.0}, {}}, "B", 0, ""}}};
