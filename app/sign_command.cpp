@@ -14,6 +14,7 @@
 #include "signer/avatar_render.hpp"
 #include "signer/clip_render.hpp"
 #include "signer/signer.hpp"
+#include "signer/signer_reach.hpp"
 #include "signer/timeline_clip.hpp"
 #include "stimuli/story/sign_notation_check.hpp"
 #include "stimuli/story/story_world.hpp"
@@ -120,6 +121,7 @@ void registerSignCommand(Commands& commands) {
         const auto signer = std::make_shared<const signer::Signer>(pacedWorld.scenes);
         // Issue 21: transitions paced by the path the signer's hands take, as in a story.
         pacedWorld.transitionPacer = signer::transitionPacer(signer);
+        pacedWorld.reach = signer::signerReach(signer->rig());  // issue 21: verbs within the comfortable reach
         const StoryWorld& world = pacedWorld;
         const LexiconSign* found = world.lexicon.find(o->gloss);
         if (!found) {

@@ -11,6 +11,7 @@
 #include "signer/clearance.hpp"
 #include "signer/screen_regions.hpp"
 #include "signer/signer.hpp"
+#include "signer/signer_reach.hpp"
 #include "signer/timeline_clip.hpp"
 #include "stimuli/story/lexicon.hpp"
 #include "stimuli/story/nonmanuals.hpp"
@@ -244,7 +245,10 @@ void registerStoryCommands(Commands& commands) {
         if (!o->check) version = requireVersion(*o);
         StoryWorld pacedWorld(o->scenesDir, o->lexiconFile);
         // Issue 21: transitions paced by the path the signer's hands take (detours included).
-        pacedWorld.transitionPacer = transitionPacer(std::make_shared<const Signer>(pacedWorld.scenes));
+        const auto pacingSigner = std::make_shared<const Signer>(pacedWorld.scenes);
+        pacedWorld.transitionPacer = transitionPacer(pacingSigner);
+        // Issue 21: verbs signed within the signer's comfortable reach.
+        pacedWorld.reach = signerReach(pacingSigner->rig());
         const StoryWorld& world = pacedWorld;
         const Story story = world.loadStory(o->file);
         std::string preset;

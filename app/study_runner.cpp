@@ -9,6 +9,7 @@
 #include "common/file_manifest.hpp"
 #include "signer/avatar_render.hpp"
 #include "signer/signer.hpp"
+#include "signer/signer_reach.hpp"
 #include "signer/timeline_clip.hpp"
 #include "stimuli/json_source.hpp"
 #include "stimuli/scenes_path.hpp"
@@ -57,7 +58,10 @@ LoadedStudy loadStudy(const StudyRunOptions& options) {
     s.world = std::make_unique<StoryWorld>(options.scenesDir, options.lexicon);
     // Issue 21: transitions paced by the path the default signer's hands take (detours
     // included), the same whatever avatar renders them.
-    s.world->transitionPacer = signer::transitionPacer(std::make_shared<const signer::Signer>(s.world->scenes));
+    const auto pacingSigner = std::make_shared<const signer::Signer>(s.world->scenes);
+    s.world->transitionPacer = signer::transitionPacer(pacingSigner);
+    // Issue 21: verbs signed within the default signer's comfortable reach, whatever avatar renders them.
+    s.world->reach = signer::signerReach(pacingSigner->rig());
     const StudyFile& study = s.study;
     for (std::size_t i = 0; i < study.stories.size(); ++i) {
         Story story = loadNamedStory(*s.world, study, study.stories[i], "/stories/" + std::to_string(i));

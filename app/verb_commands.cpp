@@ -4,6 +4,7 @@
 #include "app/clip_output.hpp"
 #include "app/commands.hpp"
 #include "signer/signer.hpp"
+#include "signer/signer_reach.hpp"
 #include "signer/timeline_clip.hpp"
 #include "signer/verb_clip.hpp"
 #include "stimuli/story/handshapes.hpp"
@@ -99,6 +100,7 @@ void renderVerb(const VerbOptions& o, const std::filesystem::path& scenesDir, co
     stimuli::TimelineSources pacing;
     pacing.shapes = &shapes;
     pacing.transitions = transitionPacer(signer.rig());
+    pacing.reach = signerReach(signer.rig());  // issue 21: within the signer's comfortable reach
     const VerbClip clip(signer.rig(), shapes, stimuli::paceVerbPerformance(performance, pacing));
     const std::uint64_t frames = renderClipToOutput(output, signer, clip, clip.middleOfVerbSeconds());
     std::printf("%s: %s %s, %llu frame%s\n", output.out.string().c_str(), performance.verb.c_str(),

@@ -40,6 +40,7 @@ TimelineSources StoryWorld::sources(const Story& story) const {
     s.lexicon = &lexicon;
     s.shapes = &shapes;
     s.transitions = transitionPacer;
+    s.reach = reach;
     s.verbs = [this, &story](const std::string& verb, VerbVersion version, double subject, double object, int line,
                              int column) {
         try {

@@ -30,6 +30,9 @@ struct StoryWorld {
     // Given to every timeline's sources (TimelineSources::transitions): the signer's pacing of
     // transitions by their detours (app/ sets signer::transitionPacer; empty: none).
     stimuli::TransitionPacer transitionPacer;
+    // Given to every timeline's sources (TimelineSources::reach): the signer's comfortable reach,
+    // within which verbs are signed (app/ sets signer::signerReach; empty: none).
+    stimuli::SignerReach reach;
 
     // `scenesDir` empty: resolveScenesDir's default. `lexicon`: a lab's own lexicon that adds to
     // SCENES/lexicon/ and overrides its signs of the same gloss (empty: the default alone).

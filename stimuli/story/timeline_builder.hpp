@@ -6,6 +6,7 @@
 #include "stimuli/story/story.hpp"
 #include "stimuli/story/timeline.hpp"
 #include "stimuli/story/timing.hpp"
+#include "stimuli/verbs/verb_reach.hpp"
 #include "stimuli/verbs/verb_synthesis.hpp"
 
 #include <array>
@@ -157,6 +158,9 @@ struct TimelineSources {
     // Optional: paces transitions by the path the signer's hands take (signer::transitionPacer).
     // Empty: by the straight blend of the keys alone (what the timeline can know by itself).
     TransitionPacer transitions;
+    // Optional: the signer's reach (signer::signerReach), within which a verb's keyframes are
+    // drawn (stimuli/verbs/verb_reach.hpp, issue 21). Empty: the performance's targets as they are.
+    SignerReach reach;
     // The versions whose slots must be equally long: all four for a study. `version` must be
     // one of them.
     std::vector<VerbVersion> slotVersions{VerbVersion::Point, VerbVersion::Vector, VerbVersion::Animator,
@@ -189,7 +193,9 @@ Timeline buildTimeline(const Story& story, VerbVersion version, const TimelineSo
 // renders it: its keys' times divided by the rate, then stretched alike throughout until no
 // stretch between keys peaks above options.peakSpeedMmPerSecond, on its keys' straight path
 // and on the posed wrists' path that sources.transitions knows (empty: the straight path
-// alone). Uses sources.shapes (with sources.transitions) and nothing else of the sources.
+// alone). First its keyframes are drawn within sources.reach (withinReach: every version
+// alike, issue 21). Uses sources.shapes (with sources.transitions), sources.reach and nothing
+// else of the sources.
 VerbPerformance paceVerbPerformance(VerbPerformance performance, const TimelineSources& sources,
                                     const TimelineOptions& options = {}, double rate = 1.0);
 

@@ -219,6 +219,8 @@ namespace signstim::stimuli {
 VerbPerformance paceVerbPerformance(VerbPerformance performance, const TimelineSources& sources,
                                     const TimelineOptions& options, double rate) {
     using namespace timeline_detail;
+    // Issue 21: where the performance's targets meet the signer, within its comfortable reach.
+    performance = withinReach(std::move(performance), sources.reach);
     Segment segment;
     segment.durationSeconds = performance.durationSeconds / rate;
     segment.contact = performance.contact;

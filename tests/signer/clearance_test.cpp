@@ -8,6 +8,7 @@
 #include "signer/clip.hpp"
 #include "signer/hand_capsules.hpp"
 #include "signer/signer.hpp"
+#include "signer/signer_reach.hpp"
 #include "stimuli/story/lexicon.hpp"
 #include "stimuli/verbs/sora.hpp"
 #include "stimuli/story/story.hpp"
@@ -52,6 +53,7 @@ struct World {
                                            verb, version, subject, object);
         };
         s.transitions = pacer;
+        s.reach = signer::signerReach(signer.rig());  // issue 21: verbs within the comfortable reach
         return s;
     }
     stimuli::Story story(const std::filesystem::path& file) const {
