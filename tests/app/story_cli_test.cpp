@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -217,13 +218,21 @@ TEST(StoryCli, CheckReportsEachVersionsPaceAndPeakWristSpeedWithinTheLimit) {
     const auto legacy = runSignstim("story " + shellQuote(kExample) + " --check --timing legacy --scenes " + shellQuote(kScenes));
     EXPECT_EQ(legacy.status, 0) << legacy.output;
     EXPECT_NE(legacy.output.find("slower than conversational signing"), std::string::npos) << legacy.output;
-    // ... and its wrists peak faster than the natural timing's (no speed limit).
+    // ... and its wrists peak faster than the natural timing's (no speed limit): the fastest of
+    // the four versions. (Not the point version alone: its verb slot is paced to the limit in
+    // both timings, and since the verbs' targets are kept within reach (stimuli/verbs/
+    // verb_reach.hpp) the legacy point telling peaks there, at 2.45 m/s as the natural one does;
+    // the legacy uninflected telling peaks at 2.74 m/s in a transition, measured 2026-11-26.)
     const auto peakOf = [](const std::string& output) {
-        double wrist = 0.0;
-        const std::size_t at = output.find("  point: ");
-        const std::size_t peak = output.find("peak wrist ", at);
-        if (at != std::string::npos && peak != std::string::npos) std::sscanf(output.c_str() + peak, "peak wrist %lf", &wrist);
-        return wrist;
+        double fastest = 0.0;
+        for (const char* version : {"  point: ", "  vector: ", "  animator: ", "  uninflected: "}) {
+            const std::size_t at = output.find(version, output.find("timing ("));
+            const std::size_t peak = at == std::string::npos ? at : output.find("peak wrist ", at);
+            double wrist = 0.0;
+            if (peak != std::string::npos && std::sscanf(output.c_str() + peak, "peak wrist %lf", &wrist) == 1)
+                fastest = std::max(fastest, wrist);
+        }
+        return fastest;
     };
     const auto natural =
         runSignstim("story " + shellQuote(kExample) + " --check --timing natural --scenes " + shellQuote(kScenes));
