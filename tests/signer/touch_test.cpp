@@ -88,7 +88,7 @@ glm::vec3 keyedRightWrist(const stimuli::Timeline& timeline, double t) {
 }
 
 // Whether a sign touches the other arm (a contact event at an `arm:` place, docs/lexicon.md:
-// SON and DAUGHTER's elbow crook, TABLE's forearm): its touch is measured on the arm too.
+// the forearm in SON, DAUGHTER, BABY and TABLE): its touch is measured on the arm too.
 bool touchesTheArm(const stimuli::LexiconSign& sign) {
     for (const stimuli::ContactEvent& e : sign.contactEvents)
         if (e.at.rfind("arm:", 0) == 0) return true;
@@ -193,13 +193,12 @@ struct KnownSign {
 // with the fingers down, in a pose the arms reach; AGAIN was fixed so, its hand landing palm
 // down instead of fingers straight down past the wrist's limit).
 // `signstim sign GLOSS` shows it missing on the posed hands ("posed contact").
-// SON, DAUGHTER, BABY: the right forearm rests across the left at its crook (touch "forearm"),
-// both elbows in front of the body; where the forearms cross near both elbows the sleeves'
-// capsules (38 mm there, thicker than a forearm's flesh under them) overlap. The contact point
-// sits 27 mm from the crook (arm:elbow-front); lifting it out of the overlap takes it 71 mm off,
-// Arm/ArmAway, so it is held here (data or an elbow the sign can ask for: the rig hangs the right
-// elbow low, and the right forearm slopes down through the left toward it).
-const KnownSign kSinksIn[] = {{"HOW", -21.5f}, {"SON", -33.2f}, {"DAUGHTER", -33.2f}, {"BABY", -33.2f}};
+const KnownSign kSinksIn[] = {{"HOW", -21.5f}};
+// SON, DAUGHTER and BABY left this list on 2026-11-26 (-33.2 mm -> 0.4-0.9 mm): the right forearm
+// lay across the left at its crook with both elbows drawn in before the body, where the
+// sleeves' capsules overlapped; now each elbow hangs by its own side (as the rig's arm solver
+// puts it) and the right forearm lies across the middle of the left (arm:forearm-front), the
+// hands' directions those of the forearms as posed.
 // Signs that say they touch with both hands and never come within 10 mm (issue 22: contact is
 // an event the motion reaches), measured on the left arm (touchesTheArm). None now: SON,
 // DAUGHTER and BABY reached the arm once the base hand pointed along the forearm the rig poses

@@ -1,0 +1,125 @@
+// Both hands, fingertips included, inside the camera frame (issue 21: for every preset and
+// aspect, 4:3 and 16:9) for lexicon signs signed alone in citation form, as `signstim sign GLOSS
+// --out` signs them: every frame at 30 fps, each hand's screen box (signer/screen_regions.hpp:
+// every bone of the hand, the fingers and their tips included, grown by kScreenRegionMarginMm)
+// inside the waist-up view, the preset that shows the hands (the face preset frames the head
+// alone). BABY, SON and DAUGHTER cradle the arms across the body (issue 22).
+#include "signer/clip.hpp"
+#include "signer/screen_regions.hpp"
+#include "signer/signer.hpp"
+#include "signer/timeline_clip.hpp"
+#include "stimuli/story/story.hpp"
+#include "stimuli/story/story_world.hpp"
+#include "stimuli/story/timeline_builder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace signstim;
+
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR) / "scenes";
+
+struct World {
+    signer::Signer signer{kScenes};
+    stimuli::StoryWorld story{kScenes.string(), ""};
+    signer::ScreenRegionModel regions{signer.avatar(), signer.rig()};
+};
+const World& world() {
+    static const World w;
+    return w;
+}
+
+// One sign alone in citation form, as `signstim sign GLOSS` signs it (rests of 0.3 s, rate 1).
+stimuli::Timeline signAlone(const std::string& gloss) {
+    const World& w = world();
+    stimuli::Story story;
+    story.file = "sign " + gloss;
+    stimuli::StorySentence sentence;
+    stimuli::StoryItem item;
+    item.kind = stimuli::StoryItemKind::Sign;
+    item.gloss = gloss;
+    sentence.gloss = gloss;
+    sentence.items.push_back(item);
+    story.sentences.push_back(sentence);
+    stimuli::TimelineOptions timing;
+    timing.signScale = 1.0;
+    timing.restSeconds = 0.3;
+    return stimuli::buildTimeline(story, stimuli::VerbVersion::Point, w.story.sources(story), timing);
+}
+
+// Frames of the moves in and out where a hand leaves the frame, held at what they are (a
+// transition's detour takes the left hand under the right as the arms uncross, below the
+// resting hands, which the waist-up view shows a few pixels above its bottom edge; 19 of the
+// lexicon's 211 signs dip out so, 2026-11-26). BABY's were 9, SON's 4, DAUGHTER's 3 before
+// the cradle drew each elbow to its own side. Lower a count when it falls.
+struct KnownOut {
+    const char* sign;
+    int frames;
+};
+const KnownOut kLeavesInTransitions[] = {{"BABY", 4}, {"SON", 2}, {"DAUGHTER", 2}};
+
+}  // namespace
+
+TEST(SignInFrame, TheCradledArmsKeepBothHandsInsideTheWaistUpFrameAtEveryAspect) {
+    // Inside the sign's own keys no frame may lose a hand; in the moves in and out no more
+    // frames than kLeavesInTransitions holds.
+    const World& w = world();
+    const signer::SignerRig& rig = w.signer.rig();
+    struct Aspect {
+        const char* name;
+        std::uint32_t width, height;
+    };
+    const Aspect aspects[] = {{"4:3", 640, 480}, {"16:9", 640, 360}};
+    std::string out;
+    for (const KnownOut& known : kLeavesInTransitions) {
+        const char* gloss = known.sign;
+        ASSERT_TRUE(w.story.lexicon.find(gloss)) << gloss;
+        const signer::TimelineClip clip(rig, signAlone(gloss));
+        const signer::ClipPoser poser(rig, clip);
+        double keysStart = 0.0, keysEnd = 0.0;
+        for (const stimuli::TimelineSpan& span : clip.timeline().spans)
+            if (span.kind == stimuli::SpanKind::Sign) keysStart = span.keysStartSeconds, keysEnd = span.keysEndSeconds;
+        ASSERT_LT(keysStart, keysEnd) << gloss;
+        for (const Aspect& a : aspects) {
+            const render::Camera camera = signer::clipCamera(w.signer.avatar(), rig, a.width, a.height, 1, 1);
+            const render::ViewCell cell = render::viewCell(a.width, a.height, 1, 1, 0);
+            int frames = 0, outside = 0, outsideInKeys = 0;
+            double first = -1.0;
+            std::string firstWhere;
+            const int total = static_cast<int>(std::floor(clip.durationSeconds() * 30.0 + 1e-9));
+            for (int f = 0; f <= total; ++f) {
+                const double t = f / 30.0;
+                const std::array<signer::ScreenBox, 4> boxes = w.regions.boxes(poser.next(t), camera, cell);
+                ++frames;
+                std::string where;
+                for (signer::ScreenRegion r : {signer::ScreenRegion::RightHand, signer::ScreenRegion::LeftHand}) {
+                    const signer::ScreenBox& b = boxes[static_cast<std::size_t>(r)];
+                    // A box clipped by the cell touches its edge: part of the hand is outside.
+                    const std::string hand = r == signer::ScreenRegion::RightHand ? " right hand" : " left hand";
+                    if (!b.visible) where += hand + " unseen";
+                    if (b.x0 <= 0) where += hand + " past the left edge";
+                    if (b.x1 >= static_cast<int>(a.width)) where += hand + " past the right edge";
+                    if (b.y0 <= 0) where += hand + " past the top";
+                    if (b.y1 >= static_cast<int>(a.height)) where += hand + " past the bottom";
+                }
+                if (where.empty()) continue;
+                if (t >= keysStart && t <= keysEnd) ++outsideInKeys;
+                if (outside++ == 0) first = t, firstWhere = where;
+            }
+            EXPECT_GT(frames, 30) << gloss;
+            if (outsideInKeys > 0 || outside > known.frames) {
+                char line[200];
+                std::snprintf(line, sizeof line, "\n  %s at %s: %d of %d frames (%d in its keys; held at %d), first at %.3f s:",
+                              gloss, a.name, outside, frames, outsideInKeys, known.frames, first);
+                out += line + firstWhere;
+            }
+        }
+    }
+    EXPECT_TRUE(out.empty()) << "a hand (fingertips included) leaves the waist-up frame:" << out;
+}
