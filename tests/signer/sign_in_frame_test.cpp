@@ -55,8 +55,9 @@ stimuli::Timeline signAlone(const std::string& gloss) {
 
 // Frames of the moves in and out where a hand leaves the frame, held at what they are (a
 // transition's detour takes the left hand under the right as the arms uncross, below the
-// resting hands, which the waist-up view shows a few pixels above its bottom edge; 19 of the
-// lexicon's 211 signs dip out so, 2026-11-26). BABY's were 9, SON's 4, DAUGHTER's 3 before
+// resting hands, which the waist-up view shows a few pixels above its bottom edge; alone, 14
+// of the lexicon's 211 signs leave the 4:3 frame only so, 1-6 frames each, and 5 more in their
+// own keys too, 2026-11-26). BABY's were 9, SON's 4, DAUGHTER's 3 before
 // the cradle drew each elbow to its own side. Lower a count when it falls.
 struct KnownOut {
     const char* sign;
