@@ -492,7 +492,9 @@ TEST_P(StoryClearance, HandsTouchOnlyInSignsThatTouch) {
 // is fixed. Touches settle on the surface (signer/timeline_clip.hpp, settleTouches), which
 // took the hand-to-hand signs from 12-23 mm deep to about kTouchDepthMm; left: EMAIL, whose
 // right hand passes through the cavity of the left C (verbs.json: the cavity is narrower than
-// the bent-B hand where the models put it). LOSE (now -1.8 mm) and BROTHER (the body -6.3 mm)
+// the bent-B hand where the models put it, and the C is
+// posed 35-50 deg forward of the upright citation where tried, the wrist at its limit: see
+// motion_limits_test.cpp, kKnownVerbBreaks). LOSE (now -1.8 mm) and BROTHER (the body -6.3 mm)
 // left the list on 2026-11-26.
 struct KnownTooDeep {
     const char* sign;

@@ -616,7 +616,22 @@ void checkVerbSlotClearance(const signer::SignerRig& rig, const signer::Timeline
 // that cuts into the torso (stimuli/verbs/verb_synthesis.cpp, sampleHand; the timeline's keys
 // alike) — a verb's path is not routed around the body as a transition is. And the hands'
 // touches that settling leaves deeper than kContactDepthToleranceMm (COPY, EMAIL: cf.
-// StoryClearance's kKnownTooDeep).
+// StoryClearance's kKnownTooDeep). Neither is a settling failure; the data asks for a path
+// through the other hand (measured 2026-11-27 on the capsules, session 12):
+//  - COPY s=-1 o=0.5: the right hand leaves the base palm 15 mm clear and 0.1 s into the
+//    stroke its spread 5 sweeps through the base B's fingers (-18 mm in a story at those
+//    places): the performer (scenes/corpus/reference_performer.json) keeps the base hand
+//    rigid with the right hand's start, which turns toward the object by half its arc angle,
+//    while the path turns toward the far-left subject, so the base hand ends up on the path.
+//    Turning both right keyframes with the path ("yaw": "path", as EMAIL's C) took these two
+//    lines out of the sweep but added COPY vector s=-1 o=1 hand-body (-8.8 mm), and a story at
+//    s=-1 o=1 then sank -19/-20 mm (point, vector) where the isolated slot did not: not kept.
+//  - EMAIL: by the handshapes' geometry (signstim hand pose), the bent-B hand is wider than
+//    the C's cavity and its fingers, bent down, reach the C's thumb; and the C is not posed as
+//    verbs.json asks: the left wrist cannot extend so far (tried with the C at (-85, -70,
+//    330-380): its fingers point 35-50 deg forward of vertical), so the cavity's axis slopes
+//    as much down-forward, across the right hand's level path. ASL-LEX 2.0 (entry "email")
+//    codes the 1 handshape, no contact, a repeated straight movement.
 struct KnownVerbBreak {
     const char* verb;
     const char* version;
