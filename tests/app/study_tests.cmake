@@ -7,7 +7,10 @@ signstim_add_test(signstim_app_study_tests
   # process (signstim_add_test, ONE_PROCESS) instead of rendering it four times.
   ONE_PROCESS
     StudyCli.AgainstOneReferenceRun
-    "StudyCli.RendersPlayableClipsResumesAndVerifyCatchesAChangedByte:StudyCli.ThreeShardsMergedEqualOneRunByteForByte:StudyCli.InterruptedRunLeavesNoBrokenFileAndResumesToTheSameBytes:StudyCli.ExperimentIsWrittenWithTheStudyIntoTheManifestAndKeptByLaterRuns"
+    "StudyCli.RendersPlayableClipsResumesAndVerifyCatchesAChangedByte:\
+StudyCli.ThreeShardsMergedEqualOneRunByteForByte:\
+StudyCli.InterruptedRunLeavesNoBrokenFileAndResumesToTheSameBytes:\
+StudyCli.ExperimentIsWrittenWithTheStudyIntoTheManifestAndKeptByLaterRuns"
   COST 150)  # the four sharing the reference run: 86 s of CPU under gcc (ThreeShards* alone ~65 s), more under ASan
 add_dependencies(signstim_app_study_tests signstim)
 
