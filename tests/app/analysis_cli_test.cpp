@@ -41,7 +41,8 @@ void writeFile(const fs::path& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
 }
 
-// The small study, rendered once per test process (CTest runs each test in its own).
+// The small study, rendered once per test process: CTest runs this file's tests in one process
+// (tests/app/study_tests.cmake, ONE_PROCESS; 14 s of CPU a render under gcc). Read only.
 const fs::path& smallStudy() {
     static const fs::path dir = [] {
         const fs::path d = freshDir(std::string("study-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());

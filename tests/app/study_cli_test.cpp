@@ -35,7 +35,9 @@ fs::path freshDir(const std::string& name) {
 std::string study(const std::string& arguments) { return "study " + arguments + " --scenes " + shellQuote(kScenes); }
 
 // One uninterrupted run of the small study (its "render" settings), for the tests that compare
-// other runs against it. CTest runs each test in its own process, in parallel: one folder per test.
+// other runs against it (read only: they copy it to change it). CTest runs the four that use it in
+// one process (tests/app/study_tests.cmake, ONE_PROCESS: 18 s of CPU a run under gcc); were they
+// run apart, each would make its own, in a folder named after it.
 const fs::path& referenceRun() {
     static const fs::path dir = [] {
         const fs::path d = freshDir(std::string("reference-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());

@@ -3,7 +3,15 @@
 signstim_add_test(signstim_app_study_tests
   SOURCES study_cli_test.cpp
   LIBS nlohmann_json::nlohmann_json signstim_test_run_command signstim_stimuli
-  COST 80)  # StudyCli.ThreeShards* ~65 s, ~80 s under ASan
+  # The four tests that compare against one uninterrupted run of the small study share it in one
+  # process (signstim_add_test, ONE_PROCESS) instead of rendering it four times.
+  ONE_PROCESS
+    StudyCli.AgainstOneReferenceRun
+    "StudyCli.RendersPlayableClipsResumesAndVerifyCatchesAChangedByte:\
+StudyCli.ThreeShardsMergedEqualOneRunByteForByte:\
+StudyCli.InterruptedRunLeavesNoBrokenFileAndResumesToTheSameBytes:\
+StudyCli.ExperimentIsWrittenWithTheStudyIntoTheManifestAndKeptByLaterRuns"
+  COST 150)  # the four sharing the reference run: 86 s of CPU under gcc (ThreeShards* alone ~65 s), more under ASan
 add_dependencies(signstim_app_study_tests signstim)
 
 # The review page and the jsPsych experiment of a rendered study in headless Chromium (label
@@ -23,7 +31,9 @@ gtest_discover_tests(signstim_app_study_browser_tests DISCOVERY_TIMEOUT 60
 # `signstim analyze` and `simulate-results` end to end on the small study (analysis area).
 signstim_add_test(signstim_app_analysis_tests
   SOURCES analysis_cli_test.cpp
-  LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
+  LIBS nlohmann_json::nlohmann_json signstim_test_run_command
+  # Every test analyses the same rendered small study: one process renders it once (ONE_PROCESS).
+  ONE_PROCESS AnalysisCli.OnOneRenderedSmallStudy "AnalysisCli.*")
 add_dependencies(signstim_app_analysis_tests signstim)
 
 # Eye-tracking regions and ELAN files beside a study's clips (issue 24 §3-4), end to end.

@@ -110,6 +110,8 @@ struct Fixture {
     }
 };
 
+// Built once per process: CTest runs the tests that use it in one process (tests/signer/
+// CMakeLists.txt, ONE_PROCESS); a new test of the default stories goes into that filter too.
 const Fixture& fixture() {
     static const Fixture f;
     return f;
@@ -168,6 +170,7 @@ struct VerbGrid {
     std::size_t instances = 0, animatorClips = 0;
 };
 
+// Built once per process, as the story fixture (ONE_PROCESS in tests/signer/CMakeLists.txt).
 const VerbGrid& verbGrid() {
     static const VerbGrid grid = [] {
         // All 8 verbs; subject and object over -1..1 in steps of 0.1 (s != o where the verb has
