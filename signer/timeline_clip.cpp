@@ -26,6 +26,13 @@ struct Resolved {
 
 }  // namespace
 
+hand::HandControls claspYielded(const hand::HandControls& controls, float share) {
+    if (share <= 0.0f) return controls;
+    hand::HandControls straight;
+    for (std::size_t f = 0; f < straight.fingers.size(); ++f) straight.fingers[f].spreadDeg = controls.fingers[f].spreadDeg;
+    return hand::interpolate(controls, straight, share);
+}
+
 glm::vec3 gazePointForReferent(const glm::dvec3& p) {
     const double horizontal = std::hypot(p.x, p.z);
     const glm::dvec3 direction = horizontal > 1e-6 ? glm::dvec3(p.x / horizontal, 0.0, p.z / horizontal) : glm::dvec3(0, 0, 1);
@@ -97,6 +104,8 @@ TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, boo
     // settled keys.
     rightTouch_.assign(timeline_.right.size(), glm::vec3(0.0f));
     leftTouch_.assign(timeline_.left.size(), glm::vec3(0.0f));
+    rightYield_.assign(timeline_.right.size(), 0.0f);
+    leftYield_.assign(timeline_.left.size(), 0.0f);
     settleTouches();
     const std::vector<stimuli::TimelineKey>& keys = timeline_.right;
     for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
@@ -133,14 +142,17 @@ void TimelineClip::settleTouches() {
     // function of t.
     struct Stretch {
         double startSeconds, endSeconds;
+        bool clasp;
     };
     std::vector<Stretch> stretches;
     for (const stimuli::TimelineSpan& span : timeline_.spans) {
         if (!span.contact.hands || span.keysEndSeconds <= span.keysStartSeconds) continue;
-        if (!stretches.empty() && span.keysStartSeconds <= stretches.back().endSeconds + 1e-9)
+        if (!stretches.empty() && span.keysStartSeconds <= stretches.back().endSeconds + 1e-9) {
             stretches.back().endSeconds = std::max(stretches.back().endSeconds, span.keysEndSeconds);
-        else
-            stretches.push_back({span.keysStartSeconds, span.keysEndSeconds});
+            stretches.back().clasp = stretches.back().clasp || span.contact.clasp;
+        } else {
+            stretches.push_back({span.keysStartSeconds, span.keysEndSeconds, span.contact.clasp});
+        }
     }
     const auto keysIn = [](const std::vector<stimuli::TimelineKey>& track, const Stretch& span) {
         std::vector<std::size_t> in;
@@ -183,6 +195,36 @@ void TimelineClip::settleTouches() {
         // the wrists' separation there, and the body's six axes.
         std::vector<SignerPosture> straight;
         for (const double t : times) straight.push_back(straightPostureAt(t, false));
+        // A clasp: the digits yield first (timeline_clip.hpp), each instant by the least share
+        // that brings the touch to kTouchDepthMm (halved kHalvings + 2 times, to 1/64 of
+        // kMostClaspYield), or the most where none does; its rate limited as the offsets' are.
+        if (span.clasp) {
+            const auto yieldedGap = [&](std::size_t i, float share) {
+                SignerPosture posture = straight[i];
+                posture.rightHand = claspYielded(posture.rightHand, share);
+                posture.leftHand = claspYielded(posture.leftHand, share);
+                const SignerCapsules capsules = signerCapsules(*rig_, posture, arms(posture));
+                return closestApproach(capsules.right, capsules.left).gapMm;
+            };
+            std::vector<float> need(times.size(), 0.0f);
+            for (std::size_t i = 0; i < times.size(); ++i) {
+                if (yieldedGap(i, 0.0f) >= -kTouchDepthMm - kSettledMm) continue;
+                float low = 0.0f, high = kMostClaspYield;
+                if (yieldedGap(i, high) >= -kTouchDepthMm)
+                    for (int k = 0; k < kHalvings + 2; ++k)
+                        (yieldedGap(i, 0.5f * (low + high)) < -kTouchDepthMm ? low : high) = 0.5f * (low + high);
+                need[i] = high;
+            }
+            const std::vector<RateBounds> rates(times.size() - 1, RateBounds{-kClaspYieldPerSecond, kClaspYieldPerSecond});
+            settled.yield = rateLimitedEnvelope(times, need, rates);
+            for (std::size_t i = 0; i < times.size(); ++i) {
+                settled.yield[i] = std::min(settled.yield[i], kMostClaspYield);
+                straight[i].rightHand = claspYielded(straight[i].rightHand, settled.yield[i]);
+                straight[i].leftHand = claspYielded(straight[i].leftHand, settled.yield[i]);
+            }
+            for (const std::size_t k : right) rightYield_[k] = settled.yieldAt(timeline_.right[k].timeSeconds);
+            for (const std::size_t k : left) leftYield_[k] = settled.yieldAt(timeline_.left[k].timeSeconds);
+        }
         const auto gapWith = [&](std::size_t i, const glm::vec3& direction, float way) {
             SignerPosture posture = straight[i];
             posture.rightWrist->wristMm += rightShare * way * direction;
@@ -199,7 +241,14 @@ void TimelineClip::settleTouches() {
             gaps.push_back(gapWith(i, glm::vec3(0.0f), 0.0f));
             if (gaps[i] < gaps[deepest]) deepest = i;
         }
-        if (gaps[deepest] >= -kTouchDepthMm - kSettledMm) continue;
+        if (gaps[deepest] >= -kTouchDepthMm - kSettledMm) {
+            if (span.clasp) {  // settled by its digits alone
+                settled.right.assign(times.size(), glm::vec3(0.0f));
+                settled.left.assign(times.size(), glm::vec3(0.0f));
+                touchSpans_.push_back(std::move(settled));
+            }
+            continue;
+        }
         // The way out along `direction` at instant i: the least that brings the touch to
         // kTouchDepthMm (steps of kStepMm, then halved); where no way up to kMostMm does, the
         // step that leaves the touch shallowest (the clearance check reports the rest).
@@ -289,6 +338,17 @@ void TimelineClip::settleTouches() {
     blendTouches();
 }
 
+float TimelineClip::TouchSpan::yieldAt(double seconds) const {
+    if (yield.empty()) return 0.0f;
+    if (seconds <= times.front()) return yield.front();
+    for (std::size_t i = 1; i < times.size(); ++i)
+        if (seconds <= times[i]) {
+            const auto u = static_cast<float>((seconds - times[i - 1]) / (times[i] - times[i - 1]));
+            return yield[i - 1] + u * (yield[i] - yield[i - 1]);
+        }
+    return yield.back();
+}
+
 glm::vec3 TimelineClip::TouchSpan::at(double seconds, bool rightHand) const {
     const std::vector<glm::vec3>& offsets = rightHand ? right : left;
     if (seconds <= times.front()) return offsets.front();
@@ -339,7 +399,16 @@ SignerPosture TimelineClip::straightPostureAt(double seconds, bool settled) cons
             const glm::vec3 b = touch[static_cast<std::size_t>(sample.to - track.data())];
             if (a != glm::vec3(0.0f) || b != glm::vec3(0.0f)) target.wristMm += a + blend * (b - a);
         }
-        const hand::HandControls controls = hand::interpolate(from.controls, to.controls, blend);
+        hand::HandControls controls = hand::interpolate(from.controls, to.controls, blend);
+        // A settled clasp's yield (settleTouches): inside the item, its share at t; elsewhere the
+        // keys' shares blended as the keys are.
+        const std::vector<float>& yields = side == hand::Side::Right ? rightYield_ : leftYield_;
+        if (inside && !inside->yield.empty()) controls = claspYielded(controls, inside->yieldAt(seconds));
+        else if (!yields.empty()) {
+            const float a = yields[static_cast<std::size_t>(sample.from - track.data())];
+            const float b = yields[static_cast<std::size_t>(sample.to - track.data())];
+            if (a > 0.0f || b > 0.0f) controls = claspYielded(controls, a + blend * (b - a));
+        }
         const std::vector<glm::vec3>& elbows = side == hand::Side::Right ? rightElbows_ : leftElbows_;
         const glm::vec3 elbow = blendElbowHints(elbows[static_cast<std::size_t>(sample.from - track.data())],
                                                 elbows[static_cast<std::size_t>(sample.to - track.data())], blend);

@@ -46,6 +46,14 @@
 // signer/touch_blend.cpp: with the keys' blend where the headroom allows, and keeping a hand
 // that comes to or leaves the other from passing deeper on the way where its offset can). The
 // pacer (transitionPacer) times a transition into a touching item with the item settled.
+// A clasp (SignContact::clasp: two curled hands that grip each other, HUSBAND's C on C) is
+// settled first by its digits: held off by the wrists, two C hands whose thumbs and curled
+// fingers cross each other's ended 58-64 mm apart, the touch lost. Its hands' digits yield
+// instead — both hands' thumbs and fingers opened toward straight (clasped), by the least
+// share, up to kMostClaspYield, that brings the touch to kTouchDepthMm, as a grip's fingers
+// curl only until they meet the other hand — and the wrists settle only what that leaves.
+// The share changes no faster than kClaspYieldPerSecond inside the item and follows the
+// keys' blend in the transitions into and out of it.
 #include "signer/clip.hpp"
 #include "signer/elbow_track.hpp"
 #include "stimuli/story/timeline.hpp"
@@ -103,13 +111,16 @@ private:
     ElbowTrack elbows_;
     std::vector<glm::vec3> rightElbows_, leftElbows_;  // per key of each track: the solver's elbow there
     std::vector<glm::vec3> rightTouch_, leftTouch_;    // per key of each track: its wrist's settling offset (body frame, mm)
+    std::vector<float> rightYield_, leftYield_;        // per key of each track: its clasp's yield (0: the handshape's own)
     // An item whose touch is settled, or a transition into or out of one (blendTouches): the
     // wrists' offsets at its instants (body frame, mm).
     struct TouchSpan {
         double startSeconds = 0.0, endSeconds = 0.0;
         std::vector<double> times;
         std::vector<glm::vec3> right, left;
+        std::vector<float> yield;  // a settled clasp's: its digits' yield at the instants (both hands); else empty
         glm::vec3 at(double seconds, bool rightHand) const;  // linear between the instants
+        float yieldAt(double seconds) const;                 // linear between the instants
     };
     std::vector<TouchSpan> touchSpans_;  // in time order
     glm::vec2 headStartDeg_{0.0f};
@@ -122,6 +133,12 @@ inline constexpr float kTransitionClearanceMm = 5.0f;
 // other, within kClearanceToleranceMm (signer/clearance.hpp: skin dents under a press), so
 // the touch is seen to reach the surface and not to pass it.
 inline constexpr float kTouchDepthMm = 2.0f;
+// [D] A clasp's digits yield by at most 60 % of their way to straight (a C stays a curved
+// hand, its thumb apart from the palm; HUSBAND's C on C needs 50-60 %), and change that share
+// by at most 3 a second (a grip's fingers settle on the other hand over a fifth of a second,
+// not in a frame).
+inline constexpr float kMostClaspYield = 0.6f;
+inline constexpr double kClaspYieldPerSecond = 3.0;
 // [D] A touch is settled at the item's keys and at this many instants per second of the
 // timeline between them (its own time, as kRoutingFramesPerSecond): the hands interpolated
 // from key to key can pass through each other where the keys do not (a hand turning over,
@@ -139,6 +156,10 @@ inline constexpr double kSettledPeakSpeedMmPerSecond = 2450.0;
 // instants per second of the timeline's own time from the transition's start (as the pacer
 // samples the wrists: finer than any output's frames, so no frame falls between two peaks).
 inline constexpr double kTouchBlendFramesPerSecond = 240.0;
+
+// A clasping hand's digits yielded by `share` (0..1) of their way to straight, the thumb to its
+// rest (hand::HandControls{}), the fingers' spread kept (TimelineClip::settleTouches).
+hand::HandControls claspYielded(const hand::HandControls& controls, float share);
 // [D] A transition's clearance is checked at this many instants per second from its start (a
 // grid of the timeline's own time, not of any output's frames: the detour, like every pose,
 // depends on the timeline alone; and on the transition alone, not where it falls), and

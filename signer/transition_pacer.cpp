@@ -69,7 +69,8 @@ double pacedTransitionSeconds(const SignerRig& rig, const stimuli::TransitionQue
             timeline.spans.push_back({stimuli::SpanKind::Verb, 0.0, seconds, "", 0, 0, 0.0, seconds, {}, 0});
         else
             for (const auto& [start, stop] : {std::pair{0.0, hold}, std::pair{hold + seconds, end}})
-                timeline.spans.push_back({stimuli::SpanKind::Sign, start, stop, "", 0, 0, start, stop, {true, false}, 0});
+                timeline.spans.push_back({stimuli::SpanKind::Sign, start, stop, "", 0, 0, start, stop,
+                                          {true, false, intoItem && start > 0.0 && query.intoClasp}, 0});
         // No elbow track: the pacer reads the reached wrists, which the elbow's swivel never moves
         // (SignerRig::reachedWristMm), so a track would be built for nothing on every try.
         const TimelineClip clip(rig, std::move(timeline), /*trackElbows=*/false);
@@ -115,6 +116,7 @@ stimuli::TransitionPacer pacerOf(const SignerRig* rig, std::shared_ptr<const voi
         add(&query.seconds, sizeof query.seconds);
         add(&query.peakSpeedMmPerSecond, sizeof query.peakSpeedMmPerSecond);
         key += query.insideItem ? 'i' : 't';
+        key += query.intoClasp ? 'c' : 'n';
         // A key's bits: its time (inside intoTouch), flags, pose and hand controls (the touch the
         // transition goes into settles on the hand as its controls shape it).
         const auto addKey = [&key, &add](const stimuli::TimelineKey& k, bool withTime) {

@@ -94,6 +94,9 @@ struct NotationPart {
     // MARRY: both hands come together; YEAR: both circle). Empty: a still base hand.
     std::vector<NotationPart> basePath;
     std::vector<NotationContact> contacts;
+    // The hands clasp each other at this part's contact (MARRY's grip in HUSBAND, WIFE,
+    // BELIEVE): their curled digits stop where they meet the other hand (SignContact::clasp).
+    bool clasp = false;
     // Whether both hands move (Battison 1978's symmetry condition applies: ASL-LEX codes such a
     // sign SymmetricalOrAlternating, or DominanceViolation when the handshapes differ).
     bool bothHandsMove() const {

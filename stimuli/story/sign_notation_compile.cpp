@@ -126,6 +126,7 @@ public:
             const bool onHand = e.at.rfind("hand:", 0) == 0 || e.at.rfind("arm:", 0) == 0;
             (onHand ? out_.contact.hands : out_.contact.body) = true;
         }
+        for (const NotationPart& p : n_.parts) out_.contact.clasp = out_.contact.clasp || p.clasp;
         return std::move(out_);
     }
 

@@ -161,7 +161,7 @@ private:
     NotationPart readPart(const json& part, const std::string& p, HandRelation signRelation, bool first) {
         if (!part.is_object()) fail(p, "a part is an object {\"seconds\": ..., \"handshape\": ..., \"at\": ...}");
         only(part, p, {"hands", "seconds", "transition", "handshape", "endHandshape", "fingers", "palm", "endFingers", "endPalm", "at",
-                       "offset", "touch", "path", "local", "repeat", "base", "contact", "about"});
+                       "offset", "touch", "path", "local", "repeat", "base", "contact", "clasp", "about"});
         NotationPart out;
         out.line = source_.lineAt(p);
         out.hands = relation(part, p, signRelation);
@@ -258,6 +258,14 @@ private:
                 event.offsetMm = where.offsetMm;
                 out.contacts.push_back(event);
             }
+        }
+        if (part.contains("clasp")) {
+            if (!part["clasp"].is_boolean()) fail(p + "/clasp", "expected true or false");
+            out.clasp = part["clasp"].get<bool>();
+            const bool onHand = std::any_of(out.contacts.begin(), out.contacts.end(),
+                                            [](const NotationContact& e) { return e.at.rfind("hand:", 0) == 0; });
+            if (out.clasp && !onHand)
+                fail(p + "/clasp", "a clasp is a contact of the two hands: give a contact event on the other hand (\"hand:...\")");
         }
         return out;
     }

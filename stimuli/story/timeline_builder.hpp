@@ -143,6 +143,7 @@ struct TransitionQuery {
     // resolved), so that a pacer can time the transition to where the signer settles the touch
     // (signer/timeline_clip.hpp, settleTouches). Empty otherwise.
     std::array<std::vector<TimelineKey>, 2> intoTouch;
+    bool intoClasp = false;  // that item's hands clasp (SignContact::clasp)
 };
 // How long the transition must last so that the path the hands actually take — around each
 // other and the body, which a straight blend of the keys does not know (the signer's

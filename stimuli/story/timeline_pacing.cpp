@@ -199,6 +199,7 @@ double Builder::paced(double seconds, const std::vector<std::array<HandState, 2>
                 const std::vector<TimelineKey>& keys = segment->hands[h];
                 q.to[static_cast<std::size_t>(h)] =
                     keys.empty() ? restKey(0.0) : queryKey(keys.front().rest, keys.front().pose, keys.front().handshape);
+                q.intoClasp = segment->contact.hands && segment->contact.clasp;
                 if (segment->contact.hands)
                     for (const TimelineKey& k : keys) {
                         TimelineKey resolved = queryKey(k.rest, k.pose, k.handshape);

@@ -34,6 +34,10 @@ struct HandPose {
 struct SignContact {
     bool hands = false;  // the hands touch each other (HELP's fist on the palm, COPY)
     bool body = false;   // a hand touches the body or the head (MY, THANK-YOU, TELL)
+    // The hands clasp each other (MARRY's part of HUSBAND, WIFE, BELIEVE): where a hand's curled
+    // digits meet the other hand they stop there, as a grip's do, instead of the whole hand
+    // being held off (signer/timeline_clip.hpp, settleTouches).
+    bool clasp = false;
 };
 
 struct VerbKeyframe {

@@ -162,6 +162,55 @@ TEST(Touch, HandsThatTouchMeetAtTheSurfaceAndTheBaseHandHolds) {
     }
 }
 
+TEST(Touch, ClaspingHandsYieldTheirDigitsAndKeepTheirPlace) {
+    // HUSBAND's clasp (its last keys: the right C palm down on the left C palm up, as the
+    // lexicon compiles them) held 0.5 s. The two C hands' thumbs and curled fingers cross each
+    // other's, 19 mm deep. Settled by the wrists (a touch that is no clasp), the right hand is
+    // held off by more than 30 mm and the palms no longer meet; as a clasp (SignContact::clasp)
+    // the digits yield, by at most kMostClaspYield of their way to straight, the touch comes to
+    // kTouchDepthMm, and the wrists stay where the keys put them.
+    const World& w = world();
+    const stimuli::LexiconSign* husband = w.story.lexicon.find("HUSBAND");
+    ASSERT_NE(husband, nullptr);
+    ASSERT_EQ(husband->keyframes.size(), 2u);
+    ASSERT_TRUE(husband->contact.clasp);
+    const auto held = [&](std::size_t h, double t) {
+        const stimuli::VerbKeyframe& v = husband->keyframes[h].back();
+        stimuli::TimelineKey k;
+        k.timeSeconds = t;
+        k.pose = v.pose;
+        k.handshape = v.handshape;
+        k.controls = w.story.shapes.at(v.handshape).controls;
+        return k;
+    };
+    for (const bool clasp : {false, true}) {
+        stimuli::Timeline timeline;
+        timeline.durationSeconds = 0.5;
+        timeline.right = {held(0, 0.0), held(0, 0.5)};
+        timeline.left = {held(1, 0.0), held(1, 0.5)};
+        timeline.spans = {{stimuli::SpanKind::Sign, 0.0, 0.5, "HUSBAND", 0, 0, 0.0, 0.5, {true, false, clasp}}};
+        timeline.gaze = {{0.0, std::nullopt}, {0.5, std::nullopt}};
+        ASSERT_LT(keyedGap(timeline, 0), -10.0f);
+        const signer::TimelineClip clip(w.signer.rig(), timeline);
+        for (const signer::ClearanceFrame& f : signer::clearanceFrames(w.signer.rig(), clip)) {
+            const signer::SignerPosture p = clip.postureAt(f.seconds);
+            const float moved = glm::distance(p.rightWrist->wristMm, keyedRightWrist(timeline, f.seconds));
+            if (!clasp) {
+                EXPECT_GT(moved, 30.0f) << "at " << f.seconds << " s";
+                continue;
+            }
+            EXPECT_LT(moved, 1e-3f) << "at " << f.seconds << " s";
+            EXPECT_GE(f.clearance.hands.gapMm, -signer::kTouchDepthMm - 0.5f) << "at " << f.seconds << " s";
+            EXPECT_LE(f.clearance.hands.gapMm, signer::kClearanceToleranceMm) << "at " << f.seconds << " s";
+            for (const auto& [posed, keyed] : {std::pair{p.rightHand, timeline.right[0].controls}, std::pair{p.leftHand, timeline.left[0].controls}}) {
+                const float bend = keyed.fingers[1].bend;
+                EXPECT_LT(posed.fingers[1].bend, bend - 0.01f) << "at " << f.seconds << " s";
+                EXPECT_GE(posed.fingers[1].bend, (1.0f - signer::kMostClaspYield) * bend - 1e-4f) << "at " << f.seconds << " s";
+            }
+        }
+    }
+}
+
 TEST(Touch, ATouchAtTheSurfaceAndASignThatDoesNotTouchAreLeftAlone) {
     // The hands as far apart as makes them just touch (within kTouchDepthMm), and deep in each
     // other in a sign that does not say it touches: the wrists go where the keys say.

@@ -224,6 +224,9 @@ TEST(SignNotation, MistakesAreNamedAtTheirLineAndField) {
          "/signs/0/notation/aslLex/variant", "names the variant"},
         {R"({"parts": [{"seconds": 0.5, "handshape": "5", "fingers": "sideways", "palm": "left", "at": "chin"}]})",
          "/signs/0/notation/parts/0/fingers", "'sideways' is not one of"},
+        {R"({"parts": [{"seconds": 0.5, "handshape": "C", "fingers": "up", "palm": "left", "at": "chin",
+            "contact": [{"when": "start"}], "clasp": true}]})",
+         "/signs/0/notation/parts/0/clasp", "a contact event on the other hand"},
     };
     for (const Case& c : cases) {
         const InputError e = errorOf(lexiconWith(c.notation));
