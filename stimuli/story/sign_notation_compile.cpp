@@ -560,6 +560,17 @@ std::optional<glm::dvec3> handPointMm(const hand::HandModel& model, const hand::
         p.x += (name == "finger-front" ? 8.0 : -8.0) * toPalm;
         return side == hand::Side::Right ? p : glm::dvec3(hand::mirrorToLeft(glm::vec3(p)));
     }
+    if (name == "radial") {
+        // ASL-LEX 2.0's FingerRadial: the index finger's thumb side, halfway along its proximal
+        // phalanx, on its surface (the bone's radius out from its line); follows the finger as it
+        // bends (a fist's is the top of the fist, beside the knuckle). Not the palm's edge: there
+        // the thumb of an A, L or S stands, and a hand put there goes through it.
+        const hand::HandPose fk = hand::forwardKinematics(model, controls, hand::Side::Right);
+        const hand::RigidTransform& bone = fk.bodies[static_cast<std::size_t>(hand::Body::IndexProximal)];
+        const glm::vec3 p = hand::transformPoint(bone, {0.0f, hand::boneRadiusMm(model, hand::Body::IndexProximal),
+                                                        0.5f * hand::boneLengthMm(model, hand::Body::IndexProximal)});
+        return glm::dvec3(side == hand::Side::Right ? p : hand::mirrorToLeft(p));
+    }
     static const std::vector<std::string> digits{"thumb", "index", "middle", "ring", "little"};
     for (std::size_t d = 0; d < digits.size(); ++d)
         if (name == digits[d]) return touchPointMm(model, controls, side, d == 0 ? "thumb-tip" : digits[d] + "-tip");
@@ -568,7 +579,6 @@ std::optional<glm::dvec3> handPointMm(const hand::HandModel& model, const hand::
     glm::vec3 p;
     if (name == "back") p = {2.0f * dim.palmCentreXMm - hand::palmarSurfaceXMm(model, mid), 0.0f, mid};
     else if (name == "heel") p = {hand::palmarSurfaceXMm(model, heel), 0.0f, heel};
-    else if (name == "radial") p = {dim.palmCentreXMm, model.mcpPositionMm[0].y, mid};
     else if (name == "ulnar") p = {dim.palmCentreXMm, model.mcpPositionMm[3].y, mid};
     // [D] Along a straight forearm: the wrist's back 20 mm behind the palm frame's origin, the
     // middle of the forearm's back 120 mm, the elbow 260 mm (the default signer's forearm).
