@@ -16,8 +16,6 @@ namespace {
 // [D] A glance at a referent: 1.2 m out along its direction, 12° below eye level.
 constexpr double kGazeDistanceMm = 1200.0;
 constexpr double kGazeDropDegrees = 12.0;
-// The default signer's eyes in the body frame (hand/gaze.hpp, GazeModel::eyesMm).
-constexpr double kEyeHeightMm = 420.0;
 
 struct Resolved {
     hand::ArmTarget target;
@@ -33,11 +31,11 @@ hand::HandControls claspYielded(const hand::HandControls& controls, float share)
     return hand::interpolate(controls, straight, share);
 }
 
-glm::vec3 gazePointForReferent(const glm::dvec3& p) {
+glm::vec3 gazePointForReferent(const glm::dvec3& p, double eyeHeightMm) {
     const double horizontal = std::hypot(p.x, p.z);
     const glm::dvec3 direction = horizontal > 1e-6 ? glm::dvec3(p.x / horizontal, 0.0, p.z / horizontal) : glm::dvec3(0, 0, 1);
     const double drop = std::tan(kGazeDropDegrees * 3.14159265358979323846 / 180.0) * kGazeDistanceMm;
-    const glm::dvec3 point = glm::dvec3(0.0, kEyeHeightMm - drop, 0.0) + kGazeDistanceMm * direction;
+    const glm::dvec3 point = glm::dvec3(0.0, eyeHeightMm - drop, 0.0) + kGazeDistanceMm * direction;
     return bodyFromSigningSpace(glm::vec3(point));
 }
 
@@ -52,10 +50,10 @@ NonManualPosture nonManualAt(const stimuli::Timeline& timeline, double seconds) 
     return posture;
 }
 
-glm::vec3 gazePointForViewer() { return glm::vec3(0.0f, static_cast<float>(kEyeHeightMm), 2000.0f); }
+glm::vec3 gazePointForViewer(double eyeHeightMm) { return glm::vec3(0.0f, static_cast<float>(eyeHeightMm), 2000.0f); }
 
-glm::vec3 gazePoint(const stimuli::GazeKey& key) {
-    return key.targetMm ? gazePointForReferent(*key.targetMm) : gazePointForViewer();
+glm::vec3 gazePoint(const stimuli::GazeKey& key, double eyeHeightMm) {
+    return key.targetMm ? gazePointForReferent(*key.targetMm, eyeHeightMm) : gazePointForViewer(eyeHeightMm);
 }
 
 TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, bool trackElbows)
@@ -81,7 +79,7 @@ TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, boo
     // 1.875·A/T).
     const std::vector<stimuli::GazeKey>& gaze = timeline_.gaze;
     const auto headFor = [&](const stimuli::GazeKey& key) {
-        const hand::GazePose g = hand::solveGaze(rig_->gaze(), gazePoint(key));
+        const hand::GazePose g = hand::solveGaze(rig_->gaze(), gazePoint(key, rig_->gaze().eyesMm.y));
         return glm::vec2(g.headYawDeg, g.headPitchDeg);
     };
     if (!gaze.empty()) {
@@ -426,7 +424,8 @@ SignerPosture TimelineClip::straightPostureAt(double seconds, bool settled) cons
     posture.nonManual = nonManualAt(timeline_, seconds);
     const stimuli::GazeSample gaze = stimuli::sampleGaze(timeline_.gaze, seconds);
     if (gaze.from) {
-        const glm::vec3 a = gazePoint(*gaze.from), b = gazePoint(*gaze.to);
+        const double eyeHeightMm = rig_->gaze().eyesMm.y;
+        const glm::vec3 a = gazePoint(*gaze.from, eyeHeightMm), b = gazePoint(*gaze.to, eyeHeightMm);
         posture.gazeMm = a + static_cast<float>(gaze.blend) * (b - a);
         posture.headDeg = headAt(seconds);
     }

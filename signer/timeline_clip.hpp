@@ -204,10 +204,12 @@ NonManualPosture nonManualAt(const stimuli::Timeline& timeline, double seconds);
 
 // Where the eyes go for a referent at a signing-space point: toward it horizontally, a little
 // below eye level (a signer glances at the locus, not down at the chest), body frame.
-glm::vec3 gazePointForReferent(const glm::dvec3& signingSpaceMm);
-// Straight at the viewer (the camera), body frame.
-glm::vec3 gazePointForViewer();
+// `eyeHeightMm`: the signer's eyes above the chest centre (the rig's, SignerRig::gaze().eyesMm.y:
+// 355 mm on the default avatar, measured from its head bone), so a gaze at the viewer is level.
+glm::vec3 gazePointForReferent(const glm::dvec3& signingSpaceMm, double eyeHeightMm);
+// Straight at the viewer (the camera) at the eyes' height, body frame.
+glm::vec3 gazePointForViewer(double eyeHeightMm);
 // Where a gaze key looks, body frame.
-glm::vec3 gazePoint(const stimuli::GazeKey& key);
+glm::vec3 gazePoint(const stimuli::GazeKey& key, double eyeHeightMm);
 
 }  // namespace signstim::signer

@@ -58,10 +58,18 @@ glm::dvec3 withinComfortableReach(const glm::dvec3& positionMm, const ArmReach& 
 
 VerbPerformance withinReach(VerbPerformance performance, const SignerReach& reach) {
     // The authored versions (the citation form, an animator's keyframes) were made on a body and
-    // are reached as they are (the verb grid: never short); drawing them in too shortened story-03's
+    // are reached as they are (the verb grid: never short at their keys, once three animator keys
+    // inside the folded arm were moved out in the files themselves); drawing them in too shortened story-03's
     // uninflected transition into EMAIL to 2.61 m/s.
     if (performance.version != VerbVersion::Point && performance.version != VerbVersion::Vector) return performance;
     // How far forward each hand's path must move to clear its folded arm; touching hands alike.
+    // Not a verb that touches the body, nor only its keys away from the touch: for TELL toward a
+    // far-right object (the chin key kept; the straight path passes 145 mm from the right
+    // shoulder joint at o=1.0) the locus would go 181 mm forward and turn from 95° to 74° right
+    // of straight ahead, o=0.9 from 88° to 73°, o=0.8 from 80° to 72° — all where o=0.7 points,
+    // the verb no longer at its object. There the route between the keys must bow around the
+    // shoulder (the keyed path, sampleHand), not the keys move (tests/signer/motion_limits_test.cpp,
+    // kKnownShortPaths).
     std::vector<double> forward(performance.hands.size(), 0.0);
     if (!performance.contact.body)
         for (std::size_t h = 0; h < performance.hands.size(); ++h) {

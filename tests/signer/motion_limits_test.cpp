@@ -168,7 +168,31 @@ namespace {
 struct VerbGrid {
     motion::MotionPeaks peaks;
     std::size_t instances = 0, animatorClips = 0;
+    // The drawn wrist short of its target at the instants of the verb's own keyframes (the
+    // loci, the contact: where the verb puts its hands), over the grid.
+    motion::Peak keyReachShortMm;
+    // Every clip whose wrist falls short anywhere (on the keyed path between the keyframes too)
+    // by more than kReachShortMm: "VERB version" and its most, with where.
+    std::vector<std::pair<std::string, motion::Peak>> shortPaths;
 };
+
+// Every figure of `from` into `into` (the larger, with where).
+void takePeaks(motion::MotionPeaks& into, const motion::MotionPeaks& from) {
+    for (motion::Peak motion::MotionPeaks::*m :
+         {&motion::MotionPeaks::elbowAboveShoulderMm, &motion::MotionPeaks::elbowSwingDegPerFrame,
+          &motion::MotionPeaks::elbowTurnDegPerFrame, &motion::MotionPeaks::swivelStepDegPerFrame,
+          &motion::MotionPeaks::hintStepDegPerFrame, &motion::MotionPeaks::wristFlexionDeg,
+          &motion::MotionPeaks::wristExtensionDeg, &motion::MotionPeaks::ulnarDeviationDeg,
+          &motion::MotionPeaks::radialDeviationDeg, &motion::MotionPeaks::supinationDeg,
+          &motion::MotionPeaks::pronationDeg, &motion::MotionPeaks::wristSpeedMmPerSecond, &motion::MotionPeaks::reachShortMm,
+          &motion::MotionPeaks::headYawDeg, &motion::MotionPeaks::eyeYawDeg, &motion::MotionPeaks::eyePitchDeg,
+          &motion::MotionPeaks::headSpeedDegPerSecond})
+        (into.*m).take((from.*m).value, (from.*m).where);
+}
+
+// [D] A verb's hand reaches where the verb puts it: the drawn wrist at most 10 mm from its
+// target (the arm solver's rounding is 0.5 mm; a settled touch moves a target a few mm).
+constexpr double kReachShortMm = 10.0;
 
 // Built once per process, as the story fixture (ONE_PROCESS in tests/signer/CMakeLists.txt).
 const VerbGrid& verbGrid() {
@@ -200,6 +224,8 @@ const VerbGrid& verbGrid() {
         pacing.transitions = signer::transitionPacer(f.signer.rig());
         pacing.reach = signer::signerReach(f.signer.rig());
         motion::MotionPeaks peaks[2];
+        motion::Peak keyReachShort[2];
+        std::vector<std::pair<std::string, motion::Peak>> shortPaths[2];
         std::size_t animatorClips[2] = {0, 0};
         const auto work = [&](int part) {
             for (std::size_t i = static_cast<std::size_t>(part); i < instances.size(); i += 2) {
@@ -213,7 +239,20 @@ const VerbGrid& verbGrid() {
                     const signer::VerbClip clip(f.signer.rig(), w.shapes, stimuli::paceVerbPerformance(std::move(performance), pacing));
                     char name[96];
                     std::snprintf(name, sizeof name, "%s %s s=%.1f o=%.1f", verb.name.c_str(), stimuli::toString(v).c_str(), s, o);
-                    motion::measureClip(f.signer.rig(), clip, name, 60.0, peaks[part]);
+                    motion::MotionPeaks own;
+                    motion::measureClip(f.signer.rig(), clip, name, 60.0, own);
+                    takePeaks(peaks[part], own);
+                    if (own.reachShortMm.value > kReachShortMm)
+                        shortPaths[part].push_back({verb.name + " " + stimuli::toString(v), own.reachShortMm});
+                    // At the keyframes themselves (the clip's lead-in, then the paced keys).
+                    for (const stimuli::HandTrack& track : clip.performance().hands)
+                        for (const stimuli::PerformanceKeyframe& key : track.keyframes) {
+                            const double t = signer::ClipTiming{}.leadInSeconds + key.timeSeconds;
+                            const hand::Side side = track.side == stimuli::HandSide::Right ? hand::Side::Right : hand::Side::Left;
+                            char at[160];
+                            std::snprintf(at, sizeof at, "%s %s key at t=%.3f s", name, side == hand::Side::Right ? "right" : "left", t);
+                            keyReachShort[part].take(f.signer.rig().solveArm(side, clip.postureAt(t)).reachErrorMm, at);
+                        }
                 }
             }
         };
@@ -222,20 +261,18 @@ const VerbGrid& verbGrid() {
         other.join();
         VerbGrid g;
         g.peaks = peaks[0];
-        for (motion::Peak motion::MotionPeaks::*m :
-             {&motion::MotionPeaks::elbowAboveShoulderMm, &motion::MotionPeaks::elbowSwingDegPerFrame,
-              &motion::MotionPeaks::elbowTurnDegPerFrame, &motion::MotionPeaks::swivelStepDegPerFrame,
-              &motion::MotionPeaks::hintStepDegPerFrame, &motion::MotionPeaks::wristFlexionDeg,
-              &motion::MotionPeaks::wristExtensionDeg, &motion::MotionPeaks::ulnarDeviationDeg,
-              &motion::MotionPeaks::radialDeviationDeg, &motion::MotionPeaks::supinationDeg,
-              &motion::MotionPeaks::pronationDeg, &motion::MotionPeaks::wristSpeedMmPerSecond, &motion::MotionPeaks::reachShortMm,
-              &motion::MotionPeaks::headYawDeg, &motion::MotionPeaks::eyeYawDeg, &motion::MotionPeaks::eyePitchDeg,
-              &motion::MotionPeaks::headSpeedDegPerSecond})
-            (g.peaks.*m).take((peaks[1].*m).value, (peaks[1].*m).where);
+        takePeaks(g.peaks, peaks[1]);
+        g.keyReachShortMm = keyReachShort[0];
+        g.keyReachShortMm.take(keyReachShort[1].value, keyReachShort[1].where);
+        for (const auto& part : shortPaths) g.shortPaths.insert(g.shortPaths.end(), part.begin(), part.end());
+        std::sort(g.shortPaths.begin(), g.shortPaths.end(),
+                  [](const auto& a, const auto& b) { return a.second.where < b.second.where; });
         g.instances = instances.size();
         g.animatorClips = animatorClips[0] + animatorClips[1];
         std::printf("%zu instances, %zu animator clips\n", g.instances, g.animatorClips);
         g.peaks.print("verb grid, 60 fps:");
+        std::printf("  %-28s %9.2f  at %s\n", "wrist short at the keys (mm)", g.keyReachShortMm.value, g.keyReachShortMm.where.c_str());
+        for (const auto& [what, peak] : g.shortPaths) std::printf("  short by %.1f mm: %s\n", peak.value, peak.where.c_str());
         return g;
     }();
     return grid;
@@ -269,10 +306,6 @@ TEST(MotionLimits, EveryVerbInstanceTurnsItsElbowsSmoothly) {
     EXPECT_LE(grid.peaks.swivelStepDegPerFrame.value, kSwivelStepDegPerFrame) << grid.peaks.swivelStepDegPerFrame.where;
 }
 
-// [D] A verb's hand reaches where the verb puts it: the drawn wrist at most 10 mm from its
-// target (the arm solver's rounding is 0.5 mm; a settled touch moves a target a few mm).
-constexpr double kReachShortMm = 10.0;
-
 // Issue 21. The point and vector models put the wrist beyond the arm's reach (580 mm from the
 // shoulder joint on the default signer) on much of the grid, and the arm locked straight across
 // the chest at shoulder height, short of the target: on the grid 185 mm (GIVE vector s=-1.0
@@ -287,14 +320,55 @@ constexpr double kReachShortMm = 10.0;
 // path from the far left to the right side passes 128 mm from the right shoulder joint, nearer
 // than the folded arm's 187 mm; ASK point s=1.0's first key 168 mm from it), so keys nearer
 // than the folded arm are pushed out and a path that passes too near is moved forward.
-// With both, 41.8 mm are left (measured 2026-11-26 over the 0.1 grid; the elbow, wrist-angle and
-// swivel figures above unchanged in their bounds): TELL point s=0.0 o=1.0 right at 0.733 s,
-// whose path from the chin passes inside the folded arm's reach; its track is not moved forward
-// because TELL touches the body (the chin contact would be lost). Still open (issue 21): move
-// only the keys away from the touch. Run with --gtest_also_run_disabled_tests.
-TEST(MotionLimits, DISABLED_EveryVerbInstanceReachesWhereTheVerbPutsItsHands) {
+// With both, 41.8 mm were left (2026-11-26, over the 0.1 grid). Measured at the keyframes
+// themselves, three animator files put the right wrist's first key inside the folded arm (ASK
+// s=0.9 o=-0.3 162 mm from the shoulder joint: 24.8 mm short; ASK s=0.9 o=-0.6 21.7 mm; SEND
+// s=0.9 o=-0.6 15.2 mm; the authored versions are not drawn within reach): those keys now sit
+// 40-60 mm further forward (scenes/animator/), clear of it by kFoldedMarginMm, and every key of
+// every instance is reached within 8.4 mm (EMAIL animator s=0.9 o=0.3's first right key, a
+// default story's instance, 181 mm from the shoulder joint; the point and vector keys 0.0 mm;
+// measured 2026-11-27). Three point/vector clips fell more than 10 mm short on
+// the path between keys, all TELL from the chin toward a far-right object: point o=1.0 41.8 mm (right at 0.733 s), point
+// o=0.9 24.4 mm, vector o=0.9 16.5 mm. The keys are reachable (the chin key 259 mm from the
+// right shoulder joint, the locus 315 mm); the straight path between them passes 145 mm in
+// front of and below that joint, inside the folded arm's 187 mm, where the forearm would have
+// to lie inside the upper arm. The arm folds to its limit and the solver sets the wrist out
+// radially (by the 42 mm), with the hand's orientation 80° beyond the wrist there and the
+// forearm turning from 90° supination to 85° pronation in one 60 fps frame (the sheet of TELL
+// point o=1: the finger snaps from up at the shoulder to pointing right). Moving the locus
+// forward until the path clears, as the untouched verbs' tracks are (only the key away from the
+// touch, the chin kept), would take o=1.0 forward 181 mm (123 mm to the bare folded reach) and
+// turn it from 95° to 74° right of straight ahead, o=0.9 from 88° to 73°, o=0.8 from 80° to 72°:
+// the far-right loci would all land where o=0.7 points (73°), and the verb would no longer
+// point at its object. The keys are where the verb puts its hands; what is left is the route
+// between them (a signer's hand bows forward around the shoulder), which belongs to the path
+// between keyframes (stimuli/verbs/verb_synthesis.cpp, sampleHand; issue 21, transitions
+// routed around the body), not to where the keys are.
+//
+// So: at every keyframe of every instance the wrist reaches its target within kReachShortMm
+// (the loci and the contact: where the verb puts its hands), and on every frame between them
+// too, except where a clip of kKnownShortPaths falls short by no more than its line. Lower or
+// remove a line when the route between keys clears the folded arm; never raise one without
+// saying why.
+struct KnownShortPath {
+    const char* verb;  // "VERB version"
+    double mostMm;
+};
+const KnownShortPath kKnownShortPaths[] = {
+    {"TELL point", 42.0},   // s=0.0 o=1.0 (o=0.9: 24.4 mm)
+    {"TELL vector", 17.0},  // s=0.0 o=0.9
+};
+
+TEST(MotionLimits, EveryVerbInstanceReachesWhereTheVerbPutsItsHands) {
     const VerbGrid& grid = verbGrid();
-    EXPECT_LE(grid.peaks.reachShortMm.value, kReachShortMm) << grid.peaks.reachShortMm.where;
+    EXPECT_LE(grid.keyReachShortMm.value, kReachShortMm) << grid.keyReachShortMm.where;
+    std::string unknown;
+    for (const auto& [what, peak] : grid.shortPaths) {
+        bool known = false;
+        for (const KnownShortPath& k : kKnownShortPaths) known = known || (what == k.verb && peak.value <= k.mostMm);
+        if (!known) unknown += "\n  " + std::to_string(peak.value) + " mm short: " + peak.where;
+    }
+    EXPECT_TRUE(unknown.empty()) << "clips short of their target beyond kReachShortMm and kKnownShortPaths:" << unknown;
 }
 
 TEST(FrameRateIndependence, ThePoseAtAnInstantIsTheSameAtEveryFrameRate) {
@@ -635,6 +709,9 @@ void checkVerbSlotClearance(const signer::SignerRig& rig, const signer::Timeline
 //    330-380): its fingers point 35-50 deg forward of vertical), so the cavity's axis slopes
 //    as much down-forward, across the right hand's level path. ASL-LEX 2.0 (entry "email")
 //    codes the 1 handshape, no contact, a repeated straight movement.
+// SEND animator s=0.9 o=-0.6's right hand 12.1 mm into the
+// body at 0.5 s is gone (2026-11-27: 87 -> 86 breaks): its first key lay inside the folded arm
+// (EveryVerbInstanceReachesWhereTheVerbPutsItsHands) and now sits 40 mm further forward.
 struct KnownVerbBreak {
     const char* verb;
     const char* version;
@@ -654,7 +731,6 @@ const KnownVerbBreak kKnownVerbBreaks[] = {
     {"EMAIL", "vector", true, -21.0f},    // s=0.9 o=0.3 (a default story's instance)
     {"GIVE", "point", false, -18.0f},     // s=1.0 o=-1.0
     {"GIVE", "vector", false, -93.0f},    // s=-1.0 o=-0.8
-    {"SEND", "animator", false, -13.0f},  // s=0.9 o=-0.6
     {"SEND", "point", false, -76.0f},     // s=-1.0 o=1.0
     {"SEND", "vector", false, -43.0f},    // s=-1.0 o=-0.5
     {"TELL", "point", false, -14.0f},     // o=1.0
