@@ -33,8 +33,9 @@ const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR)
 //   fingers down) and part as they roll (tried 20 orientations and a parting path: 42-76 mm).
 // CHANGE: the X hands' fists, palm to palm, lie in each other (thumbs, curled fingers 17-21 mm)
 //   when the hooked index tips meet on the midline: the hooks do not reach past the fists. The
-//   citation form meets one hand above the other, which mirrored hands cannot (16 orientations
-//   tried: 18-115 mm).
+//   citation form meets one hand above the other, which mirrored hands cannot; with the palms
+//   down and in (2026-11-27) the hooks lead and the fists meet 17.7 mm short (70.0 before; 28
+//   orientations tried: 17.7-131 mm).
 // GET: with the thumb tips on the midline the S fists lie in each other at the thumbs (19 mm)
 //   and at the curled ring and little fingers (17 mm), which reach as far toward the midline;
 //   settled side to side until the fingers meet, the thumb tips rest 10.4-14.4 mm apart in
@@ -50,7 +51,7 @@ const KnownPosed kKnownPosed[] = {
     {"SISTER", 20.8, 0}, {"BROTHER", 19.8, 0}, {"HUSBAND", 68.2, 0},
     {"HOW", 52.0, 0}, {"REMEMBER", 49.2, 0},
     {"WIFE", 64.0, 0}, {"BELIEVE", 64.0, 0},
-    {"CHANGE", 70.0, 0}, {"DOOR", 59.8, 55}, {"GET", 10.7, 0},
+    {"CHANGE", 17.7, 0}, {"DOOR", 59.8, 55}, {"GET", 10.7, 0},
 };
 
 std::optional<KnownPosed> known(const std::string& gloss) {
