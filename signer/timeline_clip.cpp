@@ -4,6 +4,7 @@
 #include "signer/settled_pace.hpp"
 #include "signer/signer.hpp"
 #include "signer/signer_pose.hpp"
+#include "stimuli/verbs/signing_space.hpp"
 
 #include <algorithm>
 #include <array>
@@ -66,6 +67,22 @@ TimelineClip::TimelineClip(const SignerRig& rig, stimuli::Timeline timeline, boo
             if (span.keysStartSeconds <= start && end <= span.keysEndSeconds) return true;
         return false;
     };
+    // A verb's keys: the hand goes from one to the next about the torso's axis, as the verb's
+    // own clip does (stimuli::sampleHand), so that a path from one side to the other bows in
+    // front of the chest instead of cutting through it (issue 21). Transitions and lexical
+    // signs keep the straight blend (transitions are routed around the body: routeTransition).
+    for (const bool right : {true, false}) {
+        const std::vector<stimuli::TimelineKey>& track = right ? timeline_.right : timeline_.left;
+        std::vector<bool>& swept = right ? rightSwept_ : leftSwept_;
+        swept.assign(track.size(), false);
+        for (std::size_t k = 0; k + 1 < track.size(); ++k) {
+            if (track[k].rest || track[k + 1].rest) continue;
+            for (const stimuli::TimelineSpan& span : timeline_.spans)
+                if (span.kind == stimuli::SpanKind::Verb && span.keysStartSeconds <= track[k].timeSeconds &&
+                    track[k + 1].timeSeconds <= span.keysEndSeconds)
+                    swept[k] = true;
+        }
+    }
     // The elbows at the keys, by the solver's rule of the target alone: every instant between
     // two keys looks for its elbow near their blend.
     for (const hand::Side side : {hand::Side::Right, hand::Side::Left}) {
@@ -384,6 +401,11 @@ SignerPosture TimelineClip::straightPostureAt(double seconds, bool settled) cons
         const Resolved from = resolve(*sample.from), to = resolve(*sample.to);
         const float blend = static_cast<float>(sample.blend);
         hand::ArmTarget target = blendTargets(from.target, to.target, blend);
+        const std::vector<bool>& swept = side == hand::Side::Right ? rightSwept_ : leftSwept_;
+        if (sample.from != sample.to && sample.blend > 0.0 && sample.blend < 1.0 &&
+            swept[static_cast<std::size_t>(sample.from - track.data())])
+            target.wristMm = bodyFromSigningSpace(
+                glm::vec3(stimuli::sweptPathPoint(sample.from->pose.positionMm, sample.to->pose.positionMm, sample.blend)));
         // A settled touch's offsets, blended as the keys are (settleTouches).
         // A settled touch (settleTouches): inside the item, its offsets at t; in a transition,
         // the keys' offsets blended as the keys are.

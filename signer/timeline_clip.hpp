@@ -112,6 +112,10 @@ private:
     std::vector<glm::vec3> rightElbows_, leftElbows_;  // per key of each track: the solver's elbow there
     std::vector<glm::vec3> rightTouch_, leftTouch_;    // per key of each track: its wrist's settling offset (body frame, mm)
     std::vector<float> rightYield_, leftYield_;        // per key of each track: its clasp's yield (0: the handshape's own)
+    // Per key of each track: whether the way to the next key is a verb's path, swept about the
+    // torso's axis (stimuli/verbs/signing_space.hpp, sweptPathPoint) rather than straight: both
+    // keys inside one verb span's keys, neither at rest.
+    std::vector<bool> rightSwept_, leftSwept_;
     // An item whose touch is settled, or a transition into or out of one (blendTouches): the
     // wrists' offsets at its instants (body frame, mm).
     struct TouchSpan {

@@ -1,6 +1,7 @@
 // The timeline builder's pacing (timeline_builder_internal.hpp): how long a transition takes
 // (Fitts, the speed limit, the signer's pacer) and how a segment is slowed to the limit.
 #include "stimuli/story/timeline_builder_internal.hpp"
+#include "stimuli/verbs/signing_space.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -120,7 +121,9 @@ void limitSegmentSpeed(Segment& segment, bool eachStretch, bool posedPath, const
         for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
             const double dt = keys[k + 1].timeSeconds - keys[k].timeSeconds;
             if (keys[k].rest || keys[k + 1].rest) continue;
-            const double distance = wristTravelMm(keys[k].pose, keys[k + 1].pose);
+            // A verb's path sweeps about the torso's axis (the signer draws it so: signing_space.hpp).
+            const double distance = posedPath ? sweptPathRateMm(keys[k].pose.positionMm, keys[k + 1].pose.positionMm)
+                                              : wristTravelMm(keys[k].pose, keys[k + 1].pose);
             if (distance <= 0.0) continue;
             const double needed = dt > 0.0 ? kPeakToMean * distance / options_.peakSpeedMmPerSecond / dt : 1e9;
             for (std::size_t i = 0; i + 1 < times.size(); ++i)

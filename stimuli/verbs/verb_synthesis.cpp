@@ -67,7 +67,8 @@ HandSample sampleHand(const HandTrack& track, double t) {
     const double u = (t - a.timeSeconds) / (b.timeSeconds - a.timeSeconds);
     const double eased = u * u * (3.0 - 2.0 * u);
     HandSample sample;
-    sample.pose.positionMm = a.pose.positionMm + eased * (b.pose.positionMm - a.pose.positionMm);
+    // About the torso's axis, not along the chord (signing_space.hpp, sweptPathPoint).
+    sample.pose.positionMm = sweptPathPoint(a.pose.positionMm, b.pose.positionMm, eased);
     sample.pose.orientation = slerpShortest(a.pose.orientation, b.pose.orientation, eased);
     sample.handshapeFrom = a.handshape;
     sample.handshapeTo = b.handshape;

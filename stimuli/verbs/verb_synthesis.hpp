@@ -56,7 +56,9 @@ struct VerbPerformance {
 };
 
 // The pose of a hand at time t (clamped to the track): position eased between keyframes
-// (smoothstep, so the hand starts and stops gently), orientation by slerp, and the two
+// (smoothstep, so the hand starts and stops gently) on the path swept about the torso's axis
+// (signing_space.hpp, sweptPathPoint: around the chest, not through it), orientation by
+// slerp, and the two
 // handshapes with the blend weight for interpolating their controls (SPEC §1.5).
 struct HandSample {
     HandPose pose;

@@ -17,6 +17,40 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+// Issue 21: a verb's path between keys (sweptPathPoint). From the left to the right at chest
+// height 50 mm in front of the chest centre the chord stays inside the torso (its front ~110
+// mm ahead), 150 mm from the torso's axis; the swept path
+// comes no nearer the axis than its keys and bows in front of the chest. A chord that moves
+// straight out from the body, or passes far from it, is kept; the ends are the keys exactly.
+TEST(SigningSpace, VerbPathSweepsAroundTheChestWhereItsChordWouldCutIn) {
+    const auto fromAxis = [](const glm::dvec3& p) { return std::hypot(p.x, p.z - kVerbSweepAxisZMm); };
+    const glm::dvec3 left(-300.0, 0.0, 50.0), right(300.0, 40.0, 50.0);
+    EXPECT_EQ(sweptPathPoint(left, right, 0.0), left);
+    EXPECT_EQ(sweptPathPoint(left, right, 1.0), right);
+    double nearest = 1e9;
+    for (int i = 1; i < 100; ++i) {
+        const glm::dvec3 p = sweptPathPoint(left, right, i / 100.0);
+        nearest = std::min(nearest, fromAxis(p));
+        EXPECT_NEAR(p.y, 0.4 * i, 1e-9);  // the height changes evenly
+    }
+    EXPECT_GE(nearest, fromAxis(left) - 1e-6);
+    const glm::dvec3 middle = sweptPathPoint(left, right, 0.5);
+    EXPECT_NEAR(middle.x, 0.0, 1e-9);
+    EXPECT_NEAR(middle.z, kVerbSweepAxisZMm + fromAxis(left), 1e-9);  // in front of the chest, at the keys' distance
+    // The rate bounds the path's: at least the distance between neighbouring points per blend.
+    const double rate = sweptPathRateMm(left, right);
+    for (int i = 0; i < 100; ++i)
+        EXPECT_LE(glm::distance(sweptPathPoint(left, right, i / 100.0), sweptPathPoint(left, right, (i + 1) / 100.0)),
+                  rate / 100.0 + 1e-9);
+    // Straight out from the chest: the chord.
+    const glm::dvec3 chest(60.0, 0.0, 120.0), out(-150.0, 0.0, 460.0);
+    EXPECT_EQ(sweptPathPoint(chest, out, 0.3), chest + 0.3 * (out - chest));
+    EXPECT_DOUBLE_EQ(sweptPathRateMm(chest, out), glm::length(out - chest));
+    // Across, but far out in front (beyond kVerbSweepFarMm): the chord.
+    const glm::dvec3 farLeft(-200.0, 0.0, 400.0), farRight(200.0, 0.0, 400.0);
+    EXPECT_EQ(sweptPathPoint(farLeft, farRight, 0.5), 0.5 * (farLeft + farRight));
+}
+
 TEST(SigningSpace, ArcPositionsMapToTheSemicircleAtChestHeight) {
     const SigningSpace space;
     const glm::dvec3 ahead = arcPoint(0.0, space);
