@@ -237,10 +237,34 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     // timing's to pace); only where none of them clears does the clearance win (the hands
     // never pass through each other or the body) and the speed is left to the timing.
     double speedAllowed = 0.0;
+    // Issue 21 (both hands inside the frame): a detour is sought first among those that take
+    // neither moving wrist more than kDetourDipToleranceMm below the resting wrists' height (or
+    // below the lower of its two ends, where that is lower), as the straight blend never goes:
+    // the waist-up view shows the resting hands a few pixels above its bottom edge, and a hand
+    // pushed down under the other as the arms uncross on the way to rest left the frame (story
+    // 02's NEW -> rest; SON, DAUGHTER, BABY alone). Where no such detour clears at the judged
+    // instants, the transition is routed as if there were no floor (below, in the routing loop).
+    // [D] 20 mm: the dips that left the frame went deeper; 1 mm also turned away story 10's
+    // IX -> EMAIL detour, and EMAIL's settled hands sank 0.7-4.3 mm deeper in every version.
+    constexpr float kDetourDipToleranceMm = 20.0f;
+    bool avoidDips = true;
+    const float rightLowest = std::min({rig_->restingTarget(hand::Side::Right).wristMm.y, from.rightWrist->wristMm.y,
+                                        to.rightWrist->wristMm.y}) - kDetourDipToleranceMm;
+    const float leftLowest = std::min({rig_->restingTarget(hand::Side::Left).wristMm.y, from.leftWrist->wristMm.y,
+                                       to.leftWrist->wristMm.y}) - kDetourDipToleranceMm;
+    const auto dips = [&](const std::vector<Bump>& bumps) {
+        for (std::size_t j = 0; j < times.size(); ++j) {
+            const SignerPosture p = withBumps(bumps, straight[j], times[j]);
+            if ((rightMoves && p.rightWrist->wristMm.y < rightLowest) || (leftMoves && p.leftWrist->wristMm.y < leftLowest))
+                return true;
+        }
+        return false;
+    };
     // The hands along the transition with `bumps`: every judged instant's samples, or
     // (bounded) the largest shortfall, given up on as soon as it exceeds `bound`.
     const auto follow = [&](const std::vector<Bump>& bumps, std::vector<Sample>* samples, float bound) {
         if (!bumps.empty() && peakSpeed(bumps) > speedAllowed) return std::numeric_limits<float>::infinity();
+        if (!bumps.empty() && avoidDips && dips(bumps)) return std::numeric_limits<float>::infinity();
         float worst = 0.0f;
         for (std::size_t j = 0; j < times.size(); ++j) {
             Sample s = sampleOf(withBumps(bumps, straight[j], times[j]), times[j]);
@@ -404,7 +428,14 @@ TimelineClip::Detour TimelineClip::routeTransition(double startSeconds, double e
     // short anywhere.
     float bestShortfall = std::numeric_limits<float>::infinity();
     for (int routing = 0; routing < kMostRoutings; ++routing) {
-        const Route routed = route(detour.bumps);
+        avoidDips = true;
+        Route routed = route(detour.bumps);
+        float atInstants = 0.0f;
+        for (const Sample& s : routed.samples) atInstants = std::max(atInstants, shortfallOf(s.gaps));
+        if (atInstants > kShortfallToleranceMm) {
+            avoidDips = false;
+            routed = route(detour.bumps);
+        }
         std::vector<double> shortInstants, jumps;
         const float shortfall = judgeBetween(routed, shortInstants, jumps);
         if (shortfall < bestShortfall) {
