@@ -25,9 +25,15 @@ render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t
 render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect) {
     render::Camera camera;
     camera.verticalFovDegrees = 30.0f;
-    // Visible height ≈ 1.05 m: from below the waist to above the head; wider views see the
-    // arms' full reach.
-    const float height = aspect >= 1.0f ? 1.05f : 1.05f / aspect * 0.8f;
+    // Visible height ≈ 1.05 m: from below the waist to above the head. [D] And at least 1.65 m
+    // wide (issue 21: both hands, fingertips included, in the frame): a point or vector verb at
+    // the signing arc's end (|position| 0.9-1) stretches the arm out to the side, fingertips about
+    // 0.8 m from the midline; at 1.40 m (4:3 at 1.05 m high) they left the frame in 9 of the 48
+    // default story clips, at 1.55 m in 2 (tests/signer/story_in_frame_test.cpp). 16:9 is wider
+    // than that already; a 4:3 or square view shows the signer smaller to keep the arc in. A
+    // portrait view keeps its 0.84 m (the arc cannot fit it).
+    constexpr float kMinimumWidthM = 1.65f;
+    const float height = aspect >= 1.0f ? std::max(1.05f, kMinimumWidthM / aspect) : 1.05f / aspect * 0.8f;
     const float distance = 0.5f * height / std::tan(0.5f * camera.verticalFovDegrees * 3.14159265f / 180.0f);
     camera.target = chestWorld + glm::vec3(0.0f, 0.06f, 0.0f);
     camera.eye = camera.target + glm::vec3(0.0f, 0.03f, distance);

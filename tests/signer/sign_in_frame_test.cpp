@@ -62,7 +62,9 @@ stimuli::Timeline signAlone(const std::string& gloss) {
 // resting wrists' height (signer/transition_route.cpp, 2026-11-27): BABY's 3 are left, in the
 // move in. Since then 11 of the 211 leave the 4:3 frame alone: 6 only in the moves (BUSY 1,
 // LATE 2, BABY 3, LOVE 1, TABLE 1, ENGLISH 6 frames) and PARENTS, MAD, UNCLE, GRANDFATHER,
-// FATHER in their keys too (the fingertips past the top). Lower a count when it falls.
+// FATHER in their keys too (the fingertips past the top). Once the waist-up view was kept at
+// least 1.65 m wide (signer/avatar_render.cpp: a 4:3 view 1.24 m high), BABY's 3 are at 16:9
+// only (its left hand past the bottom at 0.37 s). Lower a count when it falls.
 struct KnownOut {
     const char* sign;
     int frames;
