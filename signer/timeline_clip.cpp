@@ -353,26 +353,28 @@ void TimelineClip::settleTouches() {
     blendTouches();
 }
 
-float TimelineClip::TouchSpan::yieldAt(double seconds) const {
-    if (yield.empty()) return 0.0f;
-    if (seconds <= times.front()) return yield.front();
+namespace {
+
+// `values` at `seconds`, linear between the instants `times` (held beyond them).
+template <typename T>
+T linearAt(const std::vector<double>& times, const std::vector<T>& values, double seconds) {
+    if (seconds <= times.front()) return values.front();
     for (std::size_t i = 1; i < times.size(); ++i)
         if (seconds <= times[i]) {
             const auto u = static_cast<float>((seconds - times[i - 1]) / (times[i] - times[i - 1]));
-            return yield[i - 1] + u * (yield[i] - yield[i - 1]);
+            return values[i - 1] + u * (values[i] - values[i - 1]);
         }
-    return yield.back();
+    return values.back();
+}
+
+}  // namespace
+
+float TimelineClip::TouchSpan::yieldAt(double seconds) const {
+    return yield.empty() ? 0.0f : linearAt(times, yield, seconds);
 }
 
 glm::vec3 TimelineClip::TouchSpan::at(double seconds, bool rightHand) const {
-    const std::vector<glm::vec3>& offsets = rightHand ? right : left;
-    if (seconds <= times.front()) return offsets.front();
-    for (std::size_t i = 1; i < times.size(); ++i)
-        if (seconds <= times[i]) {
-            const auto u = static_cast<float>((seconds - times[i - 1]) / (times[i] - times[i - 1]));
-            return offsets[i - 1] + u * (offsets[i] - offsets[i - 1]);
-        }
-    return offsets.back();
+    return linearAt(times, rightHand ? right : left, seconds);
 }
 
 SignerPosture TimelineClip::postureAt(double seconds) const {

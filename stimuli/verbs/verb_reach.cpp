@@ -64,12 +64,11 @@ VerbPerformance withinReach(VerbPerformance performance, const SignerReach& reac
     if (performance.version != VerbVersion::Point && performance.version != VerbVersion::Vector) return performance;
     // How far forward each hand's path must move to clear its folded arm; touching hands alike.
     // Not a verb that touches the body, nor only its keys away from the touch: for TELL toward a
-    // far-right object (the chin key kept; the straight path passes 145 mm from the right
+    // far-right object (the chin key kept; the straight path passed 145 mm from the right
     // shoulder joint at o=1.0) the locus would go 181 mm forward and turn from 95° to 74° right
     // of straight ahead, o=0.9 from 88° to 73°, o=0.8 from 80° to 72° — all where o=0.7 points,
-    // the verb no longer at its object. There the route between the keys must bow around the
-    // shoulder (the keyed path, sampleHand), not the keys move (tests/signer/motion_limits_test.cpp,
-    // kKnownShortPaths).
+    // the verb no longer at its object. There the route between the keys bows around the
+    // shoulder instead (signing_space.hpp, sweptPathPoint), and the keys stay.
     std::vector<double> forward(performance.hands.size(), 0.0);
     if (!performance.contact.body)
         for (std::size_t h = 0; h < performance.hands.size(); ++h) {
