@@ -11,6 +11,7 @@
 #include "stimuli/story/story.hpp"
 #include "stimuli/story/story_world.hpp"
 #include "stimuli/story/timeline_builder.hpp"
+#include "tests/signer/hands_in_frame.hpp"
 
 #include <gtest/gtest.h>
 
@@ -104,17 +105,7 @@ TEST(SignInFrame, TheCradledArmsKeepBothHandsInsideTheWaistUpFrameAtEveryAspect)
                 const double t = f / 30.0;
                 const std::array<signer::ScreenBox, 4> boxes = w.regions.boxes(poser.next(t), camera, cell);
                 ++frames;
-                std::string where;
-                for (signer::ScreenRegion r : {signer::ScreenRegion::RightHand, signer::ScreenRegion::LeftHand}) {
-                    const signer::ScreenBox& b = boxes[static_cast<std::size_t>(r)];
-                    // A box clipped by the cell touches its edge: part of the hand is outside.
-                    const std::string hand = r == signer::ScreenRegion::RightHand ? " right hand" : " left hand";
-                    if (!b.visible) where += hand + " unseen";
-                    if (b.x0 <= 0) where += hand + " past the left edge";
-                    if (b.x1 >= static_cast<int>(a.width)) where += hand + " past the right edge";
-                    if (b.y0 <= 0) where += hand + " past the top";
-                    if (b.y1 >= static_cast<int>(a.height)) where += hand + " past the bottom";
-                }
+                const std::string where = test::handsOutOfFrame(boxes, a.width, a.height);
                 if (where.empty()) continue;
                 if (t >= keysStart && t <= keysEnd) ++outsideInKeys;
                 if (outside++ == 0) first = t, firstWhere = where;

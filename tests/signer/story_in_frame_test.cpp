@@ -15,6 +15,7 @@
 #include "signer/timeline_clip.hpp"
 #include "stimuli/story/story_world.hpp"
 #include "stimuli/story/timeline_builder.hpp"
+#include "tests/signer/hands_in_frame.hpp"
 #include "tests/test_breadth.hpp"
 
 #include <gtest/gtest.h>
@@ -132,17 +133,7 @@ TEST(StoryInFrame, BothHandsStayInsideTheWaistUpFrameAtEveryAspectInEveryStoryAn
                 for (std::size_t ai = 0; ai < std::size(kAspects); ++ai) {
                     const Aspect& a = kAspects[ai];
                     const std::array<signer::ScreenBox, 4> boxes = regions.boxes(pose, cameras[ai], cells[ai]);
-                    std::string edge;
-                    for (signer::ScreenRegion r : {signer::ScreenRegion::RightHand, signer::ScreenRegion::LeftHand}) {
-                        const signer::ScreenBox& b = boxes[static_cast<std::size_t>(r)];
-                        // A box clipped by the cell touches its edge: part of the hand is outside.
-                        const std::string hand = r == signer::ScreenRegion::RightHand ? " right" : " left";
-                        if (!b.visible) edge += hand + " unseen";
-                        if (b.x0 <= 0) edge += hand + " left edge";
-                        if (b.x1 >= static_cast<int>(a.width)) edge += hand + " right edge";
-                        if (b.y0 <= 0) edge += hand + " top";
-                        if (b.y1 >= static_cast<int>(a.height)) edge += hand + " bottom";
-                    }
+                    const std::string edge = test::handsOutOfFrame(boxes, a.width, a.height);
                     if (edge.empty()) continue;
                     ++outside[ai];
                     // One line per run of consecutive frames: its start, and what the signer is doing.
