@@ -10,9 +10,9 @@
 #                 Not by default: they are daemons (on a systemd machine their services are
 #                 enabled on install), and on a cluster's login node Debian's sbatch could
 #                 shadow the site's own Slurm.
-#   --with-sanitizers  also clang, its sanitizer and libFuzzer runtimes and llvm-symbolizer
-#                 (clang libclang-rt-14-dev llvm), for scripts/sanitize.sh and scripts/fuzz.sh
-#                 (docs/fuzzing.md); CI runs both.
+#   --with-sanitizers  also clang, its sanitizer and libFuzzer runtimes, llvm-symbolizer and
+#                 LLVM's linker (clang libclang-rt-14-dev llvm lld), for scripts/sanitize.sh and
+#                 scripts/fuzz.sh (docs/fuzzing.md); CI runs both.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -21,7 +21,7 @@ for arg in "$@"; do
   case "$arg" in
     --with-slurm) with_slurm=1 ;;
     --with-sanitizers) with_sanitizers=1 ;;
-    -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "setup: unknown option '$arg' (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -65,8 +65,11 @@ packages=(
   curl ca-certificates
 )
 ((with_slurm)) && packages+=(slurm-wlm munge)
-# Debian 12's clang is clang-14; --no-install-recommends would leave out its runtimes.
-((with_sanitizers)) && packages+=(clang libclang-rt-14-dev llvm)
+# Debian 12's clang is clang-14; --no-install-recommends would leave out its runtimes. lld:
+# LLVM 14's linker (1.2 MB beside the libllvm14 that clang brings anyway), which CMake uses
+# where it is installed (CMakeLists.txt, SIGNSTIM_LLD): it links each sanitizer-built binary in
+# 0.2-0.3 s of CPU instead of GNU ld's 1.2-1.6 s, ~40 binaries a build (BENCHMARKS.md).
+((with_sanitizers)) && packages+=(clang libclang-rt-14-dev llvm lld)
 
 # jsPsych is needed only by `signstim study --experiment jspsych`: without a network it is a
 # warning, and everything else still builds and runs (that test is then skipped).
