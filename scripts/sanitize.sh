@@ -9,7 +9,8 @@
 #
 # The sweeps that cost minutes under ASan take a sample that still runs every code path
 # (SIGNSTIM_TEST_BREADTH=sanitizer, tests/test_breadth.hpp: 3 of the 12 default stories in the
-# motion tests, 6 of 20 loci pairs per verb slot; docs/fuzzing.md); the gcc suite (./run.sh test)
+# motion tests, 6 of 20 loci pairs per verb slot, one seed of the mixed models' no-effect fits;
+# docs/fuzzing.md); the gcc suite (./run.sh test)
 # sweeps them whole, and so does SIGNSTIM_TEST_BREADTH=full scripts/sanitize.sh.
 #
 # Usage: scripts/sanitize.sh [--all] [--fuzz-seconds N] [--no-fuzz] [-- CTEST-ARGS...]
@@ -34,7 +35,7 @@ while (($#)); do
     --no-fuzz) fuzz=0; shift ;;
     --all) all=1; shift ;;
     --) shift; ctest_args=("$@"); break ;;
-    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "sanitize: unknown option '$1' (see --help)" >&2; exit 1 ;;
   esac
 done
