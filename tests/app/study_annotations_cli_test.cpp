@@ -5,6 +5,7 @@
 // files"). Resume, verify and shards treat them as every unit file (study_cli_test.cpp's runs
 // compare whole folders byte for byte, these included).
 #include "tests/app/run_command.hpp"
+#include "tests/app/study_reference_run.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -46,7 +47,9 @@ std::vector<std::string> split(const std::string& line) {
 }
 
 TEST(StudyAnnotationsCli, EveryClipHasRegionsAndAnElanFileListedBesideIt) {
-    const fs::path dir = render("small-study.json", "small");
+    // The small study as render() would make it, rendered once for this and StudyCli's tests
+    // that compare against it (tests/app/study_reference_run.hpp; read only here).
+    const fs::path& dir = signstim::test::smallStudyReferenceRun();
     const nlohmann::json manifest = nlohmann::json::parse(readFile(dir / "manifest.json"));
     std::map<std::string, nlohmann::json> byPath;
     for (const auto& f : manifest["files"]) byPath[f["path"].get<std::string>()] = f;

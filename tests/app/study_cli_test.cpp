@@ -5,6 +5,7 @@
 // an interrupted run leaves no broken file and resumes to the same bytes.
 #include "stimuli/study/study_experiment.hpp"
 #include "tests/app/run_command.hpp"
+#include "tests/app/study_reference_run.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -34,21 +35,9 @@ fs::path freshDir(const std::string& name) {
 
 std::string study(const std::string& arguments) { return "study " + arguments + " --scenes " + shellQuote(kScenes); }
 
-// One uninterrupted run of the small study (its "render" settings), for the tests that compare
-// other runs against it (read only: they copy it to change it). CTest runs the four that use it in
-// one process (tests/app/study_tests.cmake, ONE_PROCESS: 18 s of CPU a run under gcc); were they
-// run apart, each would make its own, in a folder named after it.
-const fs::path& referenceRun() {
-    static const fs::path dir = [] {
-        const fs::path d = freshDir(std::string("reference-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        const auto r = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(d.string())),
-                                   Capture::StdoutAndStderr, "SIGNSTIM_VALIDATION=1");
-        EXPECT_EQ(r.status, 0) << r.output;
-        EXPECT_NE(r.output.find("study complete"), std::string::npos) << r.output;
-        return d;
-    }();
-    return dir;
-}
+// One uninterrupted run of the small study, shared with the annotations test
+// (tests/app/study_reference_run.hpp).
+const fs::path& referenceRun() { return signstim::test::smallStudyReferenceRun(); }
 
 TEST(StudyCli, DefaultStudyChecksWithTheDesignOfThePaper) {
     const auto r = runSignstim(study("--check"));

@@ -1,17 +1,21 @@
 # `signstim study` end to end (the built binary, validation on): check, render, resume, verify,
 # shards and merge, interruption.
+# Eye-tracking regions and ELAN files beside a study's clips (issue 24 §3-4), end to end, in the
+# same binary: its test of every clip's regions reads the same reference run.
 signstim_add_test(signstim_app_study_tests
-  SOURCES study_cli_test.cpp
+  SOURCES study_cli_test.cpp study_annotations_cli_test.cpp
   LIBS nlohmann_json::nlohmann_json signstim_test_run_command signstim_stimuli
-  # The four tests that compare against one uninterrupted run of the small study share it in one
-  # process (signstim_add_test, ONE_PROCESS) instead of rendering it four times.
+  # The five tests that compare against or read one uninterrupted run of the small study
+  # (tests/app/study_reference_run.hpp) share it in one process (signstim_add_test,
+  # ONE_PROCESS) instead of rendering it five times.
   ONE_PROCESS
     StudyCli.AgainstOneReferenceRun
     "StudyCli.RendersPlayableClipsResumesAndVerifyCatchesAChangedByte:\
 StudyCli.ThreeShardsMergedEqualOneRunByteForByte:\
 StudyCli.InterruptedRunLeavesNoBrokenFileAndResumesToTheSameBytes:\
-StudyCli.ExperimentIsWrittenWithTheStudyIntoTheManifestAndKeptByLaterRuns"
-  COST 150)  # the four sharing the reference run: 86 s of CPU under gcc (ThreeShards* alone ~65 s), more under ASan
+StudyCli.ExperimentIsWrittenWithTheStudyIntoTheManifestAndKeptByLaterRuns:\
+StudyAnnotationsCli.EveryClipHasRegionsAndAnElanFileListedBesideIt"
+  COST 150)  # the five sharing the reference run: ~90 s of CPU under gcc (ThreeShards* alone ~65 s), more under ASan
 add_dependencies(signstim_app_study_tests signstim)
 
 # The review page and the jsPsych experiment of a rendered study in headless Chromium (label
@@ -36,11 +40,6 @@ signstim_add_test(signstim_app_analysis_tests
   ONE_PROCESS AnalysisCli.OnOneRenderedSmallStudy "AnalysisCli.*")
 add_dependencies(signstim_app_analysis_tests signstim)
 
-# Eye-tracking regions and ELAN files beside a study's clips (issue 24 §3-4), end to end.
-signstim_add_test(signstim_app_study_annotations_tests
-  SOURCES study_annotations_cli_test.cpp
-  LIBS nlohmann_json::nlohmann_json signstim_test_run_command)
-add_dependencies(signstim_app_study_annotations_tests signstim)
 # Human-video versions (issue 24 §2): synthetic recordings probed, normalised, hashed, resumed, sharded.
 signstim_add_test(signstim_app_study_human_tests
   SOURCES study_human_cli_test.cpp
