@@ -62,7 +62,10 @@ TEST(StudyCli, DraftAnimatorFilesAreRefusedUnlessAllowedAndThenListed) {
     std::string ask = readFile(scenes / "animator" / "ASK_s0.9_o-0.6.json");
     ask.replace(ask.find('{'), 1, "{\n  \"draft\": true,");
     std::ofstream(scenes / "animator" / "ASK_s0.9_o-0.6.json", std::ios::trunc) << ask;
-    const std::string base = "study " + shellQuote(kSmall) + " --scenes " + shellQuote(scenes.string());
+    // A study of story-01 and story-02 in the animator and uninflected versions (half the small
+    // study's render): the draft file is one of those its animator version reads.
+    const std::string file = fs::path(SIGNSTIM_SOURCE_DIR).append("tests/app/data/draft-animator-study.json").string();
+    const std::string base = "study " + shellQuote(file) + " --scenes " + shellQuote(scenes.string());
 
     const auto refused = runSignstim(base + " --check");
     EXPECT_EQ(refused.status, 2) << refused.output;
