@@ -25,15 +25,26 @@ render::RendererOptions signerRendererOptions(std::uint32_t width, std::uint32_t
 render::Camera waistUpCamera(const glm::vec3& chestWorld, float aspect) {
     render::Camera camera;
     camera.verticalFovDegrees = 30.0f;
-    // Visible height ≈ 1.05 m: from below the waist to above the head. [D] And at least 1.65 m
-    // wide (issue 21: both hands, fingertips included, in the frame): a point or vector verb at
-    // the signing arc's end (|position| 0.9-1) stretches the arm out to the side, fingertips about
-    // 0.8 m from the midline; at 1.40 m (4:3 at 1.05 m high) they left the frame in 9 of the 48
-    // default story clips, at 1.55 m in 2 (tests/signer/story_in_frame_test.cpp). 16:9 is wider
-    // than that already; a 4:3 or square view shows the signer smaller to keep the arc in. A
-    // portrait view keeps its 0.84 m (the arc cannot fit it).
-    constexpr float kMinimumWidthM = 1.65f;
-    const float height = aspect >= 1.0f ? std::max(1.05f, kMinimumWidthM / aspect) : 1.05f / aspect * 0.8f;
+    // [D] Visible height at least 1.15 m, from below the waist to above a hand raised at the
+    // forehead, and at least 1.75 m wide (issue 21: both hands, fingertips included, in the
+    // frame for every aspect; tests/signer/story_in_frame_test.cpp, sign_in_frame_test.cpp and
+    // the verb grid's MotionLimits.EveryVerbInstanceKeepsBothHandsInsideTheWaistUpFrame):
+    // - height: a sign whose citation form stands the fingers up at the forehead (FATHER,
+    //   UNCLE, GRANDFATHER, PARENTS, MAD; FORGET's move in from IX) lifts the fingertips about
+    //   0.1 m above the top of the head; at 1.05 m those left a 16:9 view through its top (5
+    //   signs alone, 99 frames; story-01 in every version), and the moves in and out of BUSY,
+    //   LATE, BABY, LOVE, TABLE and ENGLISH the bottom (14 frames); at 1.10 m 62 frames were
+    //   left, at 1.15 m none (measured 2026-11-27, 30 fps).
+    // - width: a point or vector verb at the signing arc's end (|position| 0.9-1) stretches the
+    //   arm out to the side; the point model carries a long sweep past the locus (SEND point
+    //   s=-1 o=1 ends with the wrist 579 mm right of the chest, fingers pointing out), fingertips
+    //   about 0.85 m from the midline. At 1.40 m (4:3 at 1.05 m high) the default stories' verbs
+    //   left the frame in 9 of their 48 clips, at 1.55 m in 2, at 1.65 m none but 6 SEND point
+    //   instances of the grid (s -0.7..-1, o 0.9..1), at 1.70 m one, at 1.72 m none.
+    // A 16:9 view is 1.15 m high (2.04 m wide), a 4:3 view 1.31 m high, a square one 1.75 m. A
+    // portrait view keeps its 0.84 m of width (the arc cannot fit it).
+    constexpr float kMinimumHeightM = 1.15f, kMinimumWidthM = 1.75f;
+    const float height = aspect >= 1.0f ? std::max(kMinimumHeightM, kMinimumWidthM / aspect) : 1.05f / aspect * 0.8f;
     const float distance = 0.5f * height / std::tan(0.5f * camera.verticalFovDegrees * 3.14159265f / 180.0f);
     camera.target = chestWorld + glm::vec3(0.0f, 0.06f, 0.0f);
     camera.eye = camera.target + glm::vec3(0.0f, 0.03f, distance);

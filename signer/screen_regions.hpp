@@ -18,7 +18,7 @@
 // included). The signing space is where signs are made (SPEC §3.1: the arc of radius r around
 // the chest): the rectangle at the chest's depth from r to the signer's left to r to the
 // right (the arc's ends), from the resting wrists' height up to the top of the head at rest;
-// it does not move. In a waist-up 4:3 panel it fills the panel's width.
+// it does not move. In a waist-up panel it spans 2r = 1.0 m of the view's width (1.75 m at 4:3, 2.04 m at 16:9).
 // Boxes are not occlusion-aware: a hand in front of the face is in both boxes.
 #include "renderer/frame.hpp"
 #include "renderer/scene.hpp"

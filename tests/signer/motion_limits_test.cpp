@@ -5,11 +5,13 @@
 // head's speed. And the pose is a function of the timeline and the instant alone: the same at
 // every frame rate, and the same in every version outside the verbs.
 #include "motion_sampling.hpp"
+#include "tests/signer/hands_in_frame.hpp"
 #include "tests/test_breadth.hpp"
 
 #include "signer/clearance.hpp"
 #include "signer/clip.hpp"
 #include "signer/hand_capsules.hpp"
+#include "signer/screen_regions.hpp"
 #include "signer/signer.hpp"
 #include "signer/signer_reach.hpp"
 #include "signer/timeline_clip.hpp"
@@ -174,7 +176,22 @@ struct VerbGrid {
     // Every clip whose wrist falls short anywhere (on the keyed path between the keyframes too)
     // by more than kReachShortMm: "VERB version" and its most, with where.
     std::vector<std::pair<std::string, motion::Peak>> shortPaths;
+    // Both hands inside the waist-up frame (issue 21 §2): the frames checked, and every clip and
+    // aspect where a hand leaves it ("VERB version s= o= 4:3: N of M frames, first at T: where").
+    std::size_t inFrameFrames = 0;
+    std::vector<std::string> outOfFrame;
 };
+
+// The aspects of issue 21's in-frame property, as the in-frame tests of stories and signs
+// alone check them (tests/signer/story_in_frame_test.cpp), at 30 fps: the rate the default
+// study renders at; the frames are every other one of the 60 fps sweep (the same instants, so
+// the arm solutions come from the rig's memory).
+struct FrameAspect {
+    const char* name;
+    std::uint32_t width, height;
+};
+constexpr FrameAspect kFrameAspects[] = {{"4:3", 640, 480}, {"16:9", 640, 360}};
+constexpr double kInFrameFramesPerSecond = 30.0;
 
 // Every figure of `from` into `into` (the larger, with where).
 void takePeaks(motion::MotionPeaks& into, const motion::MotionPeaks& from) {
@@ -227,6 +244,17 @@ const VerbGrid& verbGrid() {
         motion::Peak keyReachShort[2];
         std::vector<std::pair<std::string, motion::Peak>> shortPaths[2];
         std::size_t animatorClips[2] = {0, 0};
+        const signer::ScreenRegionModel regions(f.signer.avatar(), f.signer.rig());
+        std::vector<render::Camera> cameras;
+        std::vector<render::ViewCell> cells;
+        for (const FrameAspect& a : kFrameAspects) {
+            cameras.push_back(signer::clipCamera(f.signer.avatar(), f.signer.rig(), a.width, a.height, 1, 1));
+            cells.push_back(render::viewCell(a.width, a.height, 1, 1, 0));
+        }
+        std::size_t inFrameFrames[2] = {0, 0};
+        std::map<const stimuli::VerbDefinition*, std::pair<int, int>> firstOfVerb;
+        for (const auto& [verb, so] : instances) firstOfVerb.emplace(verb, so);
+        std::vector<std::string> outOfFrame[2];
         const auto work = [&](int part) {
             for (std::size_t i = static_cast<std::size_t>(part); i < instances.size(); i += 2) {
                 const stimuli::VerbDefinition& verb = *instances[i].first;
@@ -253,6 +281,32 @@ const VerbGrid& verbGrid() {
                             std::snprintf(at, sizeof at, "%s %s key at t=%.3f s", name, side == hand::Side::Right ? "right" : "left", t);
                             keyReachShort[part].take(f.signer.rig().solveArm(side, clip.postureAt(t)).reachErrorMm, at);
                         }
+                    // Both hands, fingertips included, inside the frame at every aspect. The
+                    // uninflected clip is the same for every subject and object: once a verb.
+                    if (v == stimuli::VerbVersion::Uninflected && instances[i].second != firstOfVerb.at(&verb)) continue;  // the loop body's last check
+                    const signer::ClipPoser poser(f.signer.rig(), clip);
+                    const int frames = static_cast<int>(std::floor(clip.durationSeconds() * kInFrameFramesPerSecond + 1e-9)) + 1;
+                    int outside[std::size(kFrameAspects)] = {};
+                    std::string first[std::size(kFrameAspects)];
+                    for (int k = 0; k < frames; ++k) {
+                        const double t = k / kInFrameFramesPerSecond;
+                        const render::Pose pose = poser.next(t);
+                        ++inFrameFrames[part];
+                        for (std::size_t a = 0; a < std::size(kFrameAspects); ++a) {
+                            const std::string edge = test::handsOutOfFrame(regions.boxes(pose, cameras[a], cells[a]),
+                                                                           kFrameAspects[a].width, kFrameAspects[a].height);
+                            if (edge.empty()) continue;
+                            if (outside[a]++ == 0) {
+                                char at[32];
+                                std::snprintf(at, sizeof at, "%.3f s:", t);
+                                first[a] = at + edge;
+                            }
+                        }
+                    }
+                    for (std::size_t a = 0; a < std::size(kFrameAspects); ++a)
+                        if (outside[a] > 0)
+                            outOfFrame[part].push_back(std::string(name) + " " + kFrameAspects[a].name + ": " + std::to_string(outside[a]) +
+                                                       " of " + std::to_string(frames) + " frames, first at " + first[a]);
                 }
             }
         };
@@ -269,10 +323,16 @@ const VerbGrid& verbGrid() {
                   [](const auto& a, const auto& b) { return a.second.where < b.second.where; });
         g.instances = instances.size();
         g.animatorClips = animatorClips[0] + animatorClips[1];
+        g.inFrameFrames = inFrameFrames[0] + inFrameFrames[1];
+        for (const auto& part : outOfFrame) g.outOfFrame.insert(g.outOfFrame.end(), part.begin(), part.end());
+        std::sort(g.outOfFrame.begin(), g.outOfFrame.end());
         std::printf("%zu instances, %zu animator clips\n", g.instances, g.animatorClips);
         g.peaks.print("verb grid, 60 fps:");
         std::printf("  %-28s %9.2f  at %s\n", "wrist short at the keys (mm)", g.keyReachShortMm.value, g.keyReachShortMm.where.c_str());
         for (const auto& [what, peak] : g.shortPaths) std::printf("  short by %.1f mm: %s\n", peak.value, peak.where.c_str());
+        std::printf("in the waist-up frame: %zu frames at %.0f fps, each in %zu aspects; %zu clip x aspect leave it\n",
+                    g.inFrameFrames, kInFrameFramesPerSecond, std::size(kFrameAspects), g.outOfFrame.size());
+        for (const std::string& out : g.outOfFrame) std::printf("  out of frame: %s\n", out.c_str());
         return g;
     }();
     return grid;
@@ -358,6 +418,27 @@ TEST(MotionLimits, EveryVerbInstanceReachesWhereTheVerbPutsItsHands) {
     for (const auto& [what, peak] : grid.shortPaths)
         shortClips += "\n  " + std::to_string(peak.value) + " mm short: " + what + " " + peak.where;
     EXPECT_TRUE(shortClips.empty()) << "clips short of their target beyond kReachShortMm:" << shortClips;
+}
+
+// Issue 21 §2: both hands, fingertips included, inside the camera frame for every aspect (4:3
+// and 16:9) on every frame of every verb instance of the grid, as `signstim verb --out` renders
+// it (the waist-up view; the face preset frames the head alone): each hand's screen box
+// (signer/screen_regions.hpp: every bone of the hand, the fingertips in, grown by
+// kScreenRegionMarginMm) inside the view at 640×480 and 640×360, at 30 fps. The same property
+// for the default stories is tests/signer/story_in_frame_test.cpp, for signs alone
+// sign_in_frame_test.cpp. Measured on the grid's clips (built once, verbGrid()); the uninflected
+// clip, the same for every subject and object, once a verb: 234 972 frames, ~11 s of the grid's
+// ~69 s of CPU (gcc, RelWithDebInfo, on a loaded 2-core machine; 2026-11-27), most of it posing
+// the hands. Before the waist-up view was kept 1.75 m wide (signer/avatar_render.cpp; it was
+// 1.65 m) 6 clips left the 4:3 frame, SEND point s=-0.7..-1.0 o=0.9..1.0 (16-19 frames each:
+// the right fingertips past the left edge, the point model carrying the sweep past the far
+// right locus); at 16:9 none.
+TEST(MotionLimits, EveryVerbInstanceKeepsBothHandsInsideTheWaistUpFrame) {
+    const VerbGrid& grid = verbGrid();
+    EXPECT_GT(grid.inFrameFrames, grid.instances * 20);
+    std::string out;
+    for (const std::string& clip : grid.outOfFrame) out += "\n  " + clip;
+    EXPECT_TRUE(out.empty()) << "a hand (fingertips included) leaves the waist-up frame:" << out;
 }
 
 TEST(FrameRateIndependence, ThePoseAtAnInstantIsTheSameAtEveryFrameRate) {
