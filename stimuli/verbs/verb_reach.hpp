@@ -66,8 +66,11 @@ struct ArmReach {
 // point), its round end, the front, the far side's round end as far as kTorsoFarSideSlopeDeg
 // beyond the front, and from there a straight line sloping back at that angle toward the far
 // side. That set is convex with a smooth (C¹) outline, so the (signed) distance to it changes
-// continuously with the target everywhere, and its outward normal too wherever a model puts a
-// hand (it switches between faces only deep inside the body, nearer its back than its front).
+// continuously with the target everywhere, and its outward normal too down to the depth of
+// the section's half depth (R); from R/2 in, the push turns smoothly toward the direction
+// from a point 2R behind the centre, mostly forward, so a key deep in the body (even behind its
+// mid-plane) comes out in front, continuously (the one point where it cannot be is 2R behind
+// the torso's centre, where no model puts a hand).
 
 // [D] The clearance kept between the hand and the torso's surface (the clearance check allows
 // kClearanceToleranceMm of overlap: signer/clearance.hpp), and the band over which the push
@@ -142,8 +145,10 @@ glm::dvec3 withinComfortableReach(const glm::dvec3& positionMm, const ArmReach& 
 // right side). So where a hand's path does, the hand's keyframes are all moved forward (+z, away
 // from the body, the lateral and vertical placement of its loci kept) by the least that clears
 // it (1 mm steps), both hands alike where they touch each other (the touch kept); not where a
-// hand touches the body (its contact would be lost). Last, every key clear of the torso
-// (clearOfTorso; not in a verb that touches the body): where both hands are keyed together,
+// hand touches the body (its contact would be lost). Between the forward move and the reach,
+// every key clear of the torso (clearOfTorso; not in a verb that touches the body; the reach
+// after it draws a key only toward its shoulder, away from the torso, or out of the folded
+// arm): where both hands are keyed together,
 // key by key both move by one offset, each of its components the larger of the two hands'
 // pushes where they agree in sign and their sum where not, so the pair keeps its shape (the
 // hands moving as one, or touching) and neither is left in the body.

@@ -185,6 +185,17 @@ TEST(VerbReach, AKeyInsideTheTorsoComesOutWithItsHandAndTheClearance) {
     // front: clear of the torso itself, but not of the slope its forearm turns back by.
     const glm::dvec3 across = clearOfTorso({-255.0, 0.0, 60.0}, up, HandSide::Right, torso);
     EXPECT_GT(across.z, 60.0 + 10.0);
+    // MEET vector s=-1 o=-0.9's left key (rounded), 35 mm behind the chest's mid-plane: out in
+    // front, where signing is, not out of the flank; and a target moving through the body's
+    // back half moves its key continuously (no step over 10 mm for 1 mm).
+    const glm::dvec3 meet = clearOfTorso({-79.0, 0.0, -27.0}, up, HandSide::Left, torso);
+    EXPECT_GT(meet.z, 105.0);
+    for (double x = -150.0; x < 150.0; x += 1.0)
+        for (double z = -100.0; z <= 100.0; z += 10.0)
+            EXPECT_LT(glm::distance(clearOfTorso({x, 0.0, z}, up, HandSide::Left, torso),
+                                    clearOfTorso({x + 1.0, 0.0, z}, up, HandSide::Left, torso)),
+                      10.0)
+                << x << " " << z;
     // Its own hand there may hang beside its flank: pushed sideways, out of the flank only.
     const glm::dvec3 own = clearOfTorso({204.0, -100.0, -12.0}, up, HandSide::Right, torso);
     EXPECT_GT(own.x - 204.0, std::abs(own.z - (-12.0)));
@@ -204,8 +215,8 @@ TEST(VerbReach, AKeyClearOfTheTorsoStaysWhereItIs) {
 
 // The pose is a function of the timeline and t, and nearby loci stay nearby: the pushed key
 // moves continuously with the target, at most a few times as far as the target moves, from
-// the torso's front outward. (Inside the body the normal turns about the stadium's round
-// ends' centres, as fast as 1/r: 6x at 50 mm from one, 55 mm behind the chest's front.)
+// the torso's front outward. (Inside the body the push turns faster with the target about the
+// stadium's round ends' centres, as 1/r there; still continuous.)
 TEST(VerbReach, TheTorsosPushChangesContinuouslyWithTheTarget) {
     const TorsoReach torso = syntheticTorso();
     const glm::dquat orientations[] = {palmFrame({0.0, 1.0, 0.3}, {0.0, 0.0, 1.0}), palmFrame({0.6, 0.0, -0.8}, {0.0, -1.0, 0.0}),
