@@ -704,9 +704,10 @@ void checkVerbSlotClearance(const signer::SignerRig& rig, const signer::Timeline
 // normal, the hand's extent toward the body and a clearance kept (stimuli::clearOfTorso, in
 // withinReach, given the rig's torso by signer::signerReach), and this sweep plays each
 // instance with the signer's reach as stories and `verb --out` do (before, without it): no
-// hand-body line is left (the closest approach 5.1 mm, GIVE vector s=-1 o=-0.8 in its lead-in
-// and SEND vector s=-1 o=-0.5). With the reach EMAIL point s=1 o=0's hands go -22.4 mm deep
-// (-18.9 without it; the same with or without the torso's push): its line is -23 (was -19).
+// hand-body line is left (the closest approach 4.1 mm, SEND vector s=-1 o=-0.5; GIVE vector
+// s=-1 o=-0.8 4.6 mm in its lead-in; 36 stretches in all). With the reach EMAIL point s=1 o=0's
+// hands go -22.4 mm deep (-18.9 without it; -22.8 with the torso's push): its line is -23
+// (was -19).
 // Left, the hands' touches that settling leaves deeper than kContactDepthToleranceMm (COPY,
 // EMAIL: cf. StoryClearance's kKnownTooDeep).
 // Those touches are not settling's failure: the data asks for a path through the other hand (measured 2026-11-27 on the capsules, session 12):
