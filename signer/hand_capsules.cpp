@@ -15,27 +15,29 @@ constexpr float kPalmHeelSpread = 0.6f;
 
 }  // namespace
 
+const std::array<TorsoSectionM, 11>& torsoSections() {
+    static const std::array<TorsoSectionM, 11> sections{{{0.86f, 0.165f, 0.105f, 0.0f},
+                                                         {0.96f, 0.160f, 0.100f, 0.0f},
+                                                         {1.06f, 0.148f, 0.092f, 0.0f},
+                                                         {1.16f, 0.150f, 0.097f, 0.004f},
+                                                         {1.24f, 0.160f, 0.105f, 0.008f},
+                                                         {1.32f, 0.170f, 0.108f, 0.008f},
+                                                         {1.38f, 0.182f, 0.100f, 0.002f},
+                                                         {1.42f, 0.184f, 0.090f, -0.004f},
+                                                         {1.455f, 0.170f, 0.075f, -0.008f},
+                                                         {1.475f, 0.130f, 0.058f, -0.010f},
+                                                         {1.487f, 0.080f, 0.045f, -0.010f}}};
+    return sections;
+}
+
 const std::vector<hand::Capsule>& bodyCapsules() {
     static const std::vector<hand::Capsule> capsules = [] {
-        // The default signer's torso sections (signer/avatar_builder.cpp, world metres with the
-        // chest bone at 1.30 m): height, half width, half depth, centre z. Each becomes a
-        // horizontal capsule whose radius is the half depth; three per interval, as the mesh
-        // has rings, so that the capsules' rounded edges leave no dent between them.
-        struct Section {
-            float y, halfWidth, halfDepth, z;
-        };
-        const std::array<Section, 11> sections{{{0.86f, 0.165f, 0.105f, 0.0f},
-                                                {0.96f, 0.160f, 0.100f, 0.0f},
-                                                {1.06f, 0.148f, 0.092f, 0.0f},
-                                                {1.16f, 0.150f, 0.097f, 0.004f},
-                                                {1.24f, 0.160f, 0.105f, 0.008f},
-                                                {1.32f, 0.170f, 0.108f, 0.008f},
-                                                {1.38f, 0.182f, 0.100f, 0.002f},
-                                                {1.42f, 0.184f, 0.090f, -0.004f},
-                                                {1.455f, 0.170f, 0.075f, -0.008f},
-                                                {1.475f, 0.130f, 0.058f, -0.010f},
-                                                {1.487f, 0.080f, 0.045f, -0.010f}}};
-        constexpr float kChestM = 1.30f, kMm = 1000.0f;
+        // The torso's sections (torsoSections): each becomes a horizontal capsule whose radius
+        // is the half depth; three per interval, as the mesh has rings, so that the capsules'
+        // rounded edges leave no dent between them.
+        using Section = TorsoSectionM;
+        const std::array<Section, 11>& sections = torsoSections();
+        constexpr float kChestM = kTorsoChestM, kMm = 1000.0f;
         std::vector<hand::Capsule> out;
         const auto add = [&](const Section& s) {
             const float half = std::max(0.0f, s.halfWidth - s.halfDepth) * kMm;

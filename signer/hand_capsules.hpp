@@ -16,10 +16,19 @@
 #include "hand/contact.hpp"
 #include "signer/signer_pose.hpp"
 
+#include <array>
 #include <limits>
 #include <vector>
 
 namespace signstim::signer {
+
+// The default signer's torso sections (signer/avatar_builder.cpp, world metres with the chest
+// bone at kTorsoChestM), from the bottom up: height, half width, half depth, centre z.
+struct TorsoSectionM {
+    float y, halfWidth, halfDepth, z;
+};
+inline constexpr float kTorsoChestM = 1.30f;
+const std::array<TorsoSectionM, 11>& torsoSections();
 
 // The default signer's torso, neck and head, body frame (mm).
 const std::vector<hand::Capsule>& bodyCapsules();

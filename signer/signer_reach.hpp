@@ -11,7 +11,9 @@ namespace signstim::signer {
 // Both arms of `rig`: the shoulder joint (its rest position, hand::ArmModel::shoulderMm,
 // mirrored into the signing-space frame), upper arm + forearm, the nearest the wrist comes with
 // the elbow at its flexion limit, with the comfortable
-// fraction of stimuli::kComfortableReachFraction.
+// fraction of stimuli::kComfortableReachFraction; and the torso (the sections of
+// bodyCapsules, signing-space mm) with the hand's extent (rig.handModel() scaled by
+// rig.handScale()) that stimuli::clearOfTorso keeps the keys out of.
 stimuli::SignerReach signerReach(const SignerRig& rig);
 
 }  // namespace signstim::signer
