@@ -27,10 +27,9 @@ const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR)
 // palms now face each other, the F thumbs meeting tip to tip; palms forward, this hand model's
 // F thumbs cross below the circles). The touch settles the hands apart until their capsules
 // meet, and what settling finds deep is not the contact's points but the rest of the hand:
-// HOW: the C hands' proximal phalanges (index, middle, ring, little) lie in each other's, 20 mm
-//   deep at every instant of the roll, and no single line frees them within a palm's width;
-//   the hands must be written so that the finger backs are what meets (bent at the knuckles,
-//   fingers down) and part as they roll (tried 20 orientations and a parting path: 42-76 mm).
+// (HOW was fixed, 2026-11-27, 52.0 mm -> 5.2: hand:finger-back lay halfway along the chord from
+// the knuckle to the middle fingertip, inside a C's curve, so putting the two places together
+// put the fingers into each other; on the finger's back surface the bent fingers' backs meet.)
 // CHANGE: the X hands' fists, palm to palm, lie in each other (thumbs, curled fingers 17-21 mm)
 //   when the hooked index tips meet on the midline: the hooks do not reach past the fists. The
 //   citation form meets one hand above the other, which mirrored hands cannot; with the palms
@@ -48,7 +47,7 @@ struct KnownPosed {
     double contactMm, orientationDeg;
 };
 const KnownPosed kKnownPosed[] = {
-    {"HOW", 52.0, 0}, {"CHANGE", 17.7, 0}, {"GET", 10.7, 0},
+    {"CHANGE", 17.7, 0}, {"GET", 10.7, 0},
 };
 
 std::optional<KnownPosed> known(const std::string& gloss) {
