@@ -338,7 +338,8 @@ private:
         // Time: n strokes and n − 1 returns.
         const int n = p.repeat;
         const double returnShare = p.returns == RepeatReturn::Lifted ? kLiftedReturnTime : p.returns == RepeatReturn::Continue ? 0.0 : 1.0;
-        const double ts = p.seconds / (n + (n - 1) * returnShare), tr = ts * returnShare;
+        const double moving = p.seconds - p.holdSeconds;  // a hold at the end takes the rest
+        const double ts = moving / (n + (n - 1) * returnShare), tr = ts * returnShare;
         CompiledNotation::Stroke record;
         record.part = part_;
         record.startSeconds = t0;
@@ -386,6 +387,8 @@ private:
             }
             now += tr;
         }
+        // The hold: the hand stays where the last stroke ended until the part's end.
+        if (p.holdSeconds > 0.0 && !path.empty()) path.push_back({t0 + p.seconds, path.back().position, path.back().u, false});
         // Local movement keys over a still hand (the parser allows oscillations only without a path).
         const bool oscillates = oscillatesLocally(p);
         if (oscillates && p.path == PathShape::None) {
@@ -454,6 +457,8 @@ private:
                         pose.positionMm = mirror(pose.positionMm);
                         pose.orientation = mirror(pose.orientation);
                     }
+                    if (relation == HandRelation::Symmetric || relation == HandRelation::Mirrored)
+                        pose.positionMm += glm::mix(p.leftOffsetMm, p.endLeftOffsetMm, u);
                 }
                 key(h, key0.t, pose, shape, key0.via);
             }
