@@ -34,13 +34,17 @@ const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR)
 //   when the hooked index tips meet on the midline: the hooks do not reach past the fists. The
 //   citation form meets one hand above the other, which mirrored hands cannot; with the palms
 //   down and in (2026-11-27) the hooks lead and the fists meet 17.7 mm short (70.0 before; 28
-//   orientations tried: 17.7-131 mm).
+//   orientations tried: 17.7-131 mm). With leftOffset (2026-11-27, one hand above the other,
+//   exchanging places by endLeftOffset, palms facing): tips stacked one over the other stay a
+//   fingertip's thickness apart (16 mm); the right hook's tip onto the top of the left fist
+//   (hand:radial) misses by 10.9 posed / 16.6 keyed at best, since with the palm in the hook is
+//   the top of the X fist and the right fist's curled fingers land first. Left as it was.
 // (GET was fixed, 2026-11-27, 10.7 mm -> 6.0: side by side, its S fists lay in each other at the
 // thumbs and curled fingers; it now stacks them as the entry does, the right fist's little-finger
 // edge on the left's thumb side, the left hand offset below its mirror image by leftOffset.)
 // Keeping mirror-image hands on the side-to-side line when settling (so that neither ends
-// ahead of or above the other) changes none of them: GET and LOSE settle along it already, HOW
-// and CHANGE find no way out along it, and FAMILY's old pose needed 53.5 mm along it.
+// ahead of or above the other) changed none of them: GET and LOSE settled along it already, HOW
+// and CHANGE found no way out along it, and FAMILY's old pose needed 53.5 mm along it.
 struct KnownPosed {
     const char* sign;
     double contactMm, orientationDeg;
