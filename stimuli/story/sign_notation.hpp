@@ -61,6 +61,9 @@ struct NotationPart {
     // as STUDENT joins a base-hand part to a symmetric one).
     HandRelation hands = HandRelation::One;
     double seconds = 0.0;  // citation time of the part, its repetitions included
+    // The hold at the end of the movement, inside `seconds` (a movement-hold: MARRY's hands stay
+    // clasped once the quick arc has landed): the strokes take seconds − holdSeconds.
+    double holdSeconds = 0.0;
     double transitionSeconds = 0.0;  // from the previous part's end (0 for the first)
     std::string handshape, endHandshape;  // endHandshape == handshape when it does not change
     glm::dvec3 fingers{0.0, 1.0, 0.0}, palm{0.0, 0.0, 1.0};
@@ -93,6 +96,11 @@ struct NotationPart {
     // it over each stroke, in step with the dominant hand, and back on its returns (RIGHT, HARD,
     // MARRY: both hands come together; YEAR: both circle). Empty: a still base hand.
     std::vector<NotationPart> basePath;
+    // Mirrored or symmetric hands: the left hand's offset from its mirror image (mm, signing
+    // space) at the stroke's start and end, changing along the stroke as the hand moves: hands
+    // that meet one above the other or one ahead of the other (GET's right fist landing on the
+    // left, CHANGE's X hands one over the other), which mirror images cannot.
+    glm::dvec3 leftOffsetMm{0.0}, endLeftOffsetMm{0.0};
     std::vector<NotationContact> contacts;
     // The hands clasp each other at this part's contact (MARRY's grip in HUSBAND, WIFE,
     // BELIEVE): their curled digits stop where they meet the other hand (SignContact::clasp).

@@ -5,6 +5,7 @@
 // base, and every contact turned into an event at its moment.
 #include "stimuli/story/sign_notation.hpp"
 
+#include "hand/contact.hpp"
 #include "stimuli/story/lexicon.hpp"
 #include "stimuli/verbs/sora.hpp"
 
@@ -337,7 +338,8 @@ private:
         // Time: n strokes and n − 1 returns.
         const int n = p.repeat;
         const double returnShare = p.returns == RepeatReturn::Lifted ? kLiftedReturnTime : p.returns == RepeatReturn::Continue ? 0.0 : 1.0;
-        const double ts = p.seconds / (n + (n - 1) * returnShare), tr = ts * returnShare;
+        const double moving = p.seconds - p.holdSeconds;  // a hold at the end takes the rest
+        const double ts = moving / (n + (n - 1) * returnShare), tr = ts * returnShare;
         CompiledNotation::Stroke record;
         record.part = part_;
         record.startSeconds = t0;
@@ -385,6 +387,8 @@ private:
             }
             now += tr;
         }
+        // The hold: the hand stays where the last stroke ended until the part's end.
+        if (p.holdSeconds > 0.0 && !path.empty()) path.push_back({t0 + p.seconds, path.back().position, path.back().u, false});
         // Local movement keys over a still hand (the parser allows oscillations only without a path).
         const bool oscillates = oscillatesLocally(p);
         if (oscillates && p.path == PathShape::None) {
@@ -453,6 +457,8 @@ private:
                         pose.positionMm = mirror(pose.positionMm);
                         pose.orientation = mirror(pose.orientation);
                     }
+                    if (relation == HandRelation::Symmetric || relation == HandRelation::Mirrored)
+                        pose.positionMm += glm::mix(p.leftOffsetMm, p.endLeftOffsetMm, u);
                 }
                 key(h, key0.t, pose, shape, key0.via);
             }
@@ -549,16 +555,41 @@ std::optional<glm::dvec3> handPointMm(const hand::HandModel& model, const hand::
                                       const std::string& name) {
     if (std::optional<glm::dvec3> p = touchPointMm(model, controls, side, name)) return p;
     if (name == "finger-back" || name == "finger-front") {
-        // The middle finger halfway from its knuckle to its tip, on its back or its pad: [D] 8 mm
-        // from the bone line, half a finger's thickness (follows the finger as it bends).
-        const std::optional<glm::dvec3> k = touchPointMm(model, controls, hand::Side::Right, "knuckles");
-        const std::optional<glm::dvec3> t = touchPointMm(model, controls, hand::Side::Right, "middle-tip");
-        if (!k || !t) return std::nullopt;
-        const float palmar = hand::palmarSurfaceXMm(model, 0.5f * hand::palmKnuckleZMm(model));
-        const double toPalm = palmar > model.dimensions.palmCentreXMm ? 1.0 : -1.0;  // the palm's side along x
-        glm::dvec3 p = 0.5 * (*k + *t);
-        p.x += (name == "finger-front" ? 8.0 : -8.0) * toPalm;
-        return side == hand::Side::Right ? p : glm::dvec3(hand::mirrorToLeft(glm::vec3(p)));
+        // The middle finger halfway along its length (knuckle to tip, along its three bones), on
+        // its surface: the bone capsule's back or pad there. Follows the finger as it bends: a
+        // flat hand's is the middle of the finger's back, a bent hand's the back of its bend, a
+        // fist's the front of the fist over the middle joints (the chord's midpoint it was before
+        // lay inside a fist and inside a C's curve, 20-30 mm from any surface).
+        const hand::HandPose fk = hand::forwardKinematics(model, controls, hand::Side::Right);
+        const int first = hand::firstBodyOf(hand::Digit::Middle);
+        double along = 0.0;
+        for (int b = 0; b < 3; ++b) along += hand::boneLengthMm(model, static_cast<hand::Body>(first + b));
+        along *= 0.5;
+        int b = 0;
+        for (; b < 2; ++b) {
+            const double length = hand::boneLengthMm(model, static_cast<hand::Body>(first + b));
+            if (along <= length) break;
+            along -= length;
+        }
+        const auto body = static_cast<hand::Body>(first + b);
+        const hand::RigidTransform& bone = fk.bodies[static_cast<std::size_t>(body)];
+        const glm::vec3 axis = hand::transformPoint(bone, {0.0f, 0.0f, static_cast<float>(along)});
+        const glm::vec3 out = hand::transformPoint(bone, {name == "finger-front" ? 1.0f : -1.0f, 0.0f, static_cast<float>(along)}) - axis;
+        // Out along the bone's back to the surface of the finger's capsules: past the bone's own
+        // radius, and past the neighbouring bone's rounded end where it is wider. The pad stays
+        // on its bone's surface: in a bent finger it is the crease, which no ray leaves.
+        const std::array<hand::Capsule, hand::kBodyCount> capsules = hand::boneCapsules(model, fk);
+        float reach = hand::boneRadiusMm(model, body);
+        for (bool inside = name == "finger-back"; inside && reach < 30.0f;) {
+            inside = false;
+            for (int c = first; c < first + 3; ++c) {
+                const hand::Capsule& capsule = capsules[static_cast<std::size_t>(c)];
+                if (hand::distancePointSegment(axis + reach * out, capsule.start, capsule.end) < capsule.radiusMm - 1e-3f) inside = true;
+            }
+            if (inside) reach += 0.05f;
+        }
+        const glm::vec3 p = axis + reach * out;
+        return glm::dvec3(side == hand::Side::Right ? p : hand::mirrorToLeft(p));
     }
     if (name == "radial") {
         // ASL-LEX 2.0's FingerRadial: the index finger's thumb side, halfway along its proximal

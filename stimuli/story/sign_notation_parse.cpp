@@ -161,7 +161,7 @@ private:
     NotationPart readPart(const json& part, const std::string& p, HandRelation signRelation, bool first) {
         if (!part.is_object()) fail(p, "a part is an object {\"seconds\": ..., \"handshape\": ..., \"at\": ...}");
         only(part, p, {"hands", "seconds", "transition", "handshape", "endHandshape", "fingers", "palm", "endFingers", "endPalm", "at",
-                       "offset", "touch", "path", "local", "repeat", "base", "contact", "clasp", "about"});
+                       "offset", "touch", "path", "local", "repeat", "base", "contact", "clasp", "about", "leftOffset", "endLeftOffset", "hold"});
         NotationPart out;
         out.line = source_.lineAt(p);
         out.hands = relation(part, p, signRelation);
@@ -178,7 +178,16 @@ private:
         if (part.contains("endFingers")) out.endFingers = f, out.endPalm = q;
         out.at = place(part, p, "at", "offset");
         out.touch = text(part, p, "touch", "base");
+        for (const char* key : {"leftOffset", "endLeftOffset"})
+            if (part.contains(key) && relation != HandRelation::Mirrored && relation != HandRelation::Symmetric)
+                fail(p + "/" + key, "only mirrored or symmetric hands have the left hand offset from the mirror image");
+        if (part.contains("leftOffset")) out.leftOffsetMm = vector3(part["leftOffset"], p + "/leftOffset", kOffsetMm);
+        out.endLeftOffsetMm = part.contains("endLeftOffset") ? vector3(part["endLeftOffset"], p + "/endLeftOffset", kOffsetMm) : out.leftOffsetMm;
         if (part.contains("path")) readPath(part["path"], p + "/path", out);
+        if (part.contains("hold")) {
+            if (out.path == PathShape::None) fail(p + "/hold", "a hold ends a movement: give the part a \"path\"");
+            out.holdSeconds = number(part, p, "hold", NumberRange{0.0, std::max(0.0, out.seconds - 0.05), "s"}, 0.0);
+        }
         if (part.contains("local")) readLocal(part["local"], p + "/local", out);
         if (part.contains("repeat")) {
             const json& r = part["repeat"];

@@ -236,13 +236,11 @@ struct KnownSign {
     const char* sign;
     float gapMm;
 };
-// HOW: the notation's finger backs face up, not each other, so hands its check finds touching
-// at a point pass 21 mm through each other (the curled fingers' knuckles), and settling finds
-// no way out within a palm's width along one line (data: the finger backs facing each other
-// with the fingers down, in a pose the arms reach; AGAIN was fixed so, its hand landing palm
-// down instead of fingers straight down past the wrist's limit).
-// `signstim sign GLOSS` shows it missing on the posed hands ("posed contact").
-const KnownSign kSinksIn[] = {{"HOW", -21.5f}};
+// None now: HOW left on 2026-11-27 (-21.5 mm -> within kContactDepthToleranceMm): its contact
+// place, hand:finger-back, lay inside the C's curve (the chord from the knuckle to the middle
+// fingertip), and the hands put there passed through each other's curled fingers; the place is
+// now on the finger's back surface, and the bent fingers' backs meet on the midline.
+const KnownSign kSinksIn[] = {{"", 0.0f}};
 // SON, DAUGHTER and BABY left this list on 2026-11-26 (-33.2 mm -> 0.4-0.9 mm): the right forearm
 // lay across the left at its crook with both elbows drawn in before the body, where the
 // sleeves' capsules overlapped; now each elbow hangs by its own side (as the rig's arm solver

@@ -230,5 +230,71 @@ TEST(SignNotationHands, MistakesInTheNewRelationsAreNamedAtTheirField) {
     }
 }
 
+// Issue 22 (GET, CHANGE): mirrored hands that meet one above the other. The left hand is its
+// mirror image moved by leftOffset at the stroke's start and by endLeftOffset at its end, in
+// between along the line joining them; the relation is still checked (and coded) as mirrored;
+// the offset is refused on hands that are not mirror images.
+TEST(SignNotationHands, MirroredHandsOffsetByLeftOffsetMeetOneAboveTheOther) {
+    const std::string notation = R"({"hands": "mirrored", "parts": [
+        {"seconds": 0.5, "handshape": "S", "fingers": "forward", "palm": "left", "at": "neutral", "offset": [0, 100, 60], "touch": "ulnar",
+         "path": {"shape": "arc", "to": "hand:ulnar", "toOffset": [0, 60, -40], "side": "up"},
+         "leftOffset": [-30, -130, -10], "endLeftOffset": [-30, -70, -10]}]})";
+    const Lexicon lexicon = parse(lexiconWith(notation));
+    const LexiconSign& sign = lexicon.signs.front();
+    const std::vector<TimelineKey> right = track(sign, 0), left = track(sign, 1);
+    const auto mirrorOf = [](const glm::dvec3& p) { return glm::dvec3(-p.x, p.y, p.z); };
+    EXPECT_LT(glm::distance(left.front().pose.positionMm, mirrorOf(right.front().pose.positionMm) + glm::dvec3(-30, -130, -10)), 1e-9);
+    EXPECT_LT(glm::distance(left.back().pose.positionMm, mirrorOf(right.back().pose.positionMm) + glm::dvec3(-30, -70, -10)), 1e-9);
+    // Halfway along the stroke the offset is between the two, on the line joining them.
+    const double mid = 0.5 * sign.durationSeconds();
+    const glm::dvec3 offset = poseAt(left, mid).positionMm - mirrorOf(poseAt(right, mid).positionMm);
+    EXPECT_NEAR(offset.x, -30.0, 1.0);
+    EXPECT_NEAR(offset.z, -10.0, 1.0);
+    EXPECT_GT(offset.y, -125.0);
+    EXPECT_LT(offset.y, -75.0);
+    const std::vector<NotationCheck> checks = checkSignNotation(sign, lexicon, shapes(), model());
+    ASSERT_NE(findCheck(checks, "hands mirrored"), nullptr);
+    EXPECT_TRUE(findCheck(checks, "hands mirrored")->ok) << findCheck(checks, "hands mirrored")->detail;
+    EXPECT_EQ(deriveAslLexCode(*sign.notation, shapes())[0].signType, "SymmetricalOrAlternating");
+    // Without endLeftOffset the offset is held: leftOffset at the end too.
+    std::string held = notation;
+    held.replace(held.find(R"("leftOffset")"), std::string(R"("leftOffset": [-30, -130, -10], "endLeftOffset": [-30, -70, -10])").size(),
+                 R"("leftOffset": [-30, -130, -10])");
+    const Lexicon heldLexicon = parse(lexiconWith(held));
+    const std::vector<TimelineKey> heldRight = track(heldLexicon.signs.front(), 0), heldLeft = track(heldLexicon.signs.front(), 1);
+    EXPECT_LT(glm::distance(heldLeft.back().pose.positionMm, mirrorOf(heldRight.back().pose.positionMm) + glm::dvec3(-30, -130, -10)), 1e-9);
+    // Refused where the hands are not mirror images, at its field.
+    const InputError e = errorOf(lexiconWith(R"({"hands": "base", "parts": [{"seconds": 0.5, "handshape": "S", "fingers": "forward",
+        "palm": "left", "at": "hand:back", "leftOffset": [0, -50, 0],
+        "base": {"handshape": "S", "fingers": "right", "palm": "down", "at": "neutral"}}]})"));
+    EXPECT_EQ(e.field(), "/signs/0/notation/parts/0/leftOffset") << e.what();
+}
+
+// Issue 22 (MARRY): a hold at the end of the movement. The strokes take the part's time less the
+// hold, the hand stays where they ended until the part's end, and the contact comes at the
+// stroke's end; a hold without a path, or as long as the part, is refused at its field.
+TEST(SignNotationHands, AHoldEndsTheMovementAndTheHandStaysUntilThePartsEnd) {
+    const std::string part = R"("handshape": "C", "fingers": "forward", "palm": "down", "at": "hand:palm", "offset": [0, 150, 0],
+        "touch": "palm", "path": {"shape": "arc", "to": "hand:palm", "toOffset": [0, 20, 0], "side": "forward"},
+        "base": {"handshape": "C", "fingers": "right", "palm": "up", "at": "neutral", "offset": [-20, -60, -40]},
+        "contact": [{"when": "end"}])";
+    const Lexicon lexicon = parse(lexiconWith(R"({"hands": "base", "parts": [{"seconds": 0.9, "hold": 0.4, )" + part + "}]}"));
+    const LexiconSign& sign = lexicon.signs.front();
+    EXPECT_NEAR(sign.durationSeconds(), 0.9, 1e-9);
+    const std::vector<TimelineKey> right = track(sign, 0);
+    const glm::dvec3 landed = poseAt(right, 0.5).positionMm;
+    EXPECT_LT(glm::distance(poseAt(right, 0.7).positionMm, landed), 1e-6);
+    EXPECT_LT(glm::distance(poseAt(right, 0.9).positionMm, landed), 1e-6);
+    EXPECT_GT(glm::distance(poseAt(right, 0.25).positionMm, landed), 20.0);  // still on its way halfway through the movement
+    ASSERT_EQ(sign.contactEvents.size(), 1u);
+    EXPECT_NEAR(sign.contactEvents.front().timeSeconds, 0.5, 1e-9);
+    const std::vector<NotationCheck> checks = checkSignNotation(sign, lexicon, shapes(), model());
+    for (const NotationCheck& c : checks) EXPECT_TRUE(c.ok) << c.name << ": " << c.detail;
+    EXPECT_EQ(errorOf(lexiconWith(R"({"hands": "base", "parts": [{"seconds": 0.9, "hold": 0.9, )" + part + "}]}")).field(),
+              "/signs/0/notation/parts/0/hold");
+    EXPECT_EQ(errorOf(lexiconWith(R"({"hands": "one", "parts": [{"seconds": 0.5, "hold": 0.2, "handshape": "C", "fingers": "forward",
+        "palm": "down", "at": "neutral"}]})")).field(), "/signs/0/notation/parts/0/hold");
+}
+
 }  // namespace
 }  // namespace signstim::stimuli

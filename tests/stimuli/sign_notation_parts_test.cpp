@@ -1,6 +1,8 @@
 // The sign notation's parts and places (docs/lexicon.md): a still base hand after its last
 // part, a zigzag's corners passed through, a named finger of the other hand as a place, a
 // relation per part (compounds like STUDENT). Lexicons written here are synthetic.
+#include "hand/contact.hpp"
+#include "hand/hand_model.hpp"
 #include "stimuli/story/sign_notation_check.hpp"
 #include "stimuli/story/timeline.hpp"
 #include "stimuli/verbs/sora.hpp"
@@ -224,6 +226,38 @@ TEST(SignNotationParts, TheNewPlacesAreFoundAndCodedAsAslLexCodesThem) {
         ASSERT_TRUE(shipped.locations.count(side)) << side;
         EXPECT_EQ(aslLexLocation(side, 0.0), (std::pair<std::string, std::string>{"Body", "Clavicle"}));
     }
+}
+
+// Issue 22: the back of the fingers (hand:finger-back) is on the fingers' surface in every
+// handshape: on the middle finger's capsules halfway along the finger, and inside no bone of the
+// hand (a fist's is the front of the fist over the middle joints; the chord's midpoint it was
+// before lay inside a fist, 20-30 mm from its surface, and inside a C's curve). The pad
+// (finger-front) is on its bone's surface; in a bent finger that is the crease.
+TEST(SignNotationParts, TheBackOfTheFingersIsOnTheFingersSurfaceInEveryHandshape) {
+    const int first = hand::firstBodyOf(hand::Digit::Middle);
+    for (const Handshape& shape : shapes().shapes)
+        for (const hand::Side side : {hand::Side::Right, hand::Side::Left})
+            for (const std::string name : {"finger-back", "finger-front"}) {
+                const std::optional<glm::dvec3> point = handPointMm(model(), shape.controls, side, name);
+                ASSERT_TRUE(point.has_value()) << name;
+                const glm::vec3 p(*point);
+                const std::array<hand::Capsule, hand::kBodyCount> capsules =
+                    hand::boneCapsules(model(), hand::forwardKinematics(model(), shape.controls, side));
+                float union_ = 1e9f, onOne = 1e9f, deepest = 1e9f;
+                int deepestBody = 0;
+                for (int b = 1; b < hand::kBodyCount; ++b) {
+                    const hand::Capsule& c = capsules[static_cast<std::size_t>(b)];
+                    const float gap = hand::distancePointSegment(p, c.start, c.end) - c.radiusMm;
+                    if (b >= first && b < first + 3) union_ = std::min(union_, gap), onOne = std::min(onOne, std::abs(gap));
+                    else if (gap < deepest) deepest = gap, deepestBody = b;
+                }
+                if (name == "finger-front") {
+                    EXPECT_LT(onOne, 0.1f) << shape.name << " finger-front: off its bone's surface by " << onOne << " mm";
+                    continue;
+                }
+                EXPECT_LT(std::abs(union_), 0.1f) << shape.name << " finger-back: " << union_ << " mm from the middle finger's surface";
+                EXPECT_GT(deepest, -0.5f) << shape.name << " finger-back: inside body " << deepestBody << " by " << -deepest << " mm";
+            }
 }
 
 // Issue 22 (HELP): a carried base hand moves with the dominant hand's path, keeping its place
