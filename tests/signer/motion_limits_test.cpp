@@ -698,8 +698,8 @@ void checkVerbSlotClearance(const signer::SignerRig& rig, const signer::Timeline
 // with s and o both left: its left hand's keys 146-164 mm from the axis, inside the torso;
 // SEND, ASK vector and SEND's animator file start at the chest): the path cannot route
 // round a key the study varies, the model or the file must move it. And the hands' touches
-// that settling leaves deeper than kContactDepthToleranceMm (COPY: cf. StoryClearance's
-// kKnownTooDeep, which EMAIL left on 2026-11-27).
+// that settling leaves deeper than kContactDepthToleranceMm (none now: COPY's and EMAIL's
+// left on 2026-11-27, below).
 // Those touches are not settling's failure: the data asks for a path through the other hand (measured 2026-11-27 on the capsules, session 12):
 //  - COPY s=-1 o=0.5: the right hand leaves the base palm 15 mm clear and 0.1 s into the
 //    stroke its spread 5 sweeps through the base B's fingers (-18 mm in a story at those
@@ -709,6 +709,10 @@ void checkVerbSlotClearance(const signer::SignerRig& rig, const signer::Timeline
 //    Turning both right keyframes with the path ("yaw": "path", as EMAIL's C) took these two
 //    lines out of the sweep but added COPY vector s=-1 o=1 hand-body (-8.8 mm), and a story at
 //    s=-1 o=1 then sank -19/-20 mm (point, vector) where the isolated slot did not: not kept.
+//    Fixed 2026-11-27: COPY's citation lifts the right hand 65 mm off the base palm (a middle
+//    key at 0.2 s that the performer keeps turned with the start, toward the object) before it
+//    turns toward the subject, so it pulls away above the base B's fingers: COPY's two lines
+//    are gone (sweep: hands -2.0 mm at the settled touch, hand-body >= 16 mm).
 //  - EMAIL (gone, 2026-11-27): the bent-B hand was wider than the C's cavity and the upright C
 //    was not posed as asked (the left wrist cannot extend so far). Now as ASL-LEX 2.0 'email'
 //    codes it: the 1 hand's index slides into a palm-down C without contact (scenes/verbs.json),
@@ -725,8 +729,6 @@ struct KnownVerbBreak {
 };
 const KnownVerbBreak kKnownVerbBreaks[] = {
     {"ASK", "vector", false, -9.0f},      // s=0.2 o=0.6 (at key 0)
-    {"COPY", "point", true, -22.0f},      // s=-1.0 o=0.5
-    {"COPY", "vector", true, -22.0f},     // s=-1.0 o=0.5
     {"GIVE", "vector", false, -93.0f},    // s=-1.0 o=-0.8 (its left hand's keys in the torso)
     {"SEND", "vector", false, -43.0f},    // s=-1.0 o=-0.5 (at key 0)
 };

@@ -65,8 +65,9 @@ TEST(VerbLibrary, HasTheEightVerbsOfThePaperWithTheirClassAndHands) {
         ASSERT_NE(verb, nullptr) << name;
         EXPECT_EQ(verb->inflection, inflection) << name;
         EXPECT_EQ(verb->handCount(), hands) << name;
-        // EMAIL: the swing from the subject, the index's aim at the C, its slide in and back out.
-        EXPECT_EQ(verb->keyframeCount(), name == "EMAIL" ? 4u : 2u) << name;
+        // EMAIL: the swing from the subject, the index's aim at the C, its slide in and back out;
+        // COPY: the touch on the base palm, the lift off it, the closing hand's pull away.
+        EXPECT_EQ(verb->keyframeCount(), name == "EMAIL" ? 4u : name == "COPY" ? 3u : 2u) << name;
     }
     EXPECT_EQ(verbs.find("ASK")->citation[0][0].handshape, "1");
     EXPECT_EQ(verbs.find("ASK")->citation[0][1].handshape, "X");  // the index finger bends
@@ -234,8 +235,9 @@ TEST(VerbModels, SwappingSubjectAndObjectReversesThePathDirection) {
         for (const auto predict : {&predictPoint, &predictVector}) {
             const auto forward = predict(model, 0.9, -0.6);
             const auto backward = predict(model, -0.6, 0.9);
-            const glm::dvec3 d1 = forward[0][1].positionMm - forward[0][0].positionMm;
-            const glm::dvec3 d2 = backward[0][1].positionMm - backward[0][0].positionMm;
+            // From the first key to the last (COPY lifts off the palm on the way).
+            const glm::dvec3 d1 = forward[0].back().positionMm - forward[0].front().positionMm;
+            const glm::dvec3 d2 = backward[0].back().positionMm - backward[0].front().positionMm;
             EXPECT_LT(sign * d1.x, -100.0) << name;  // toward the object on the left
             EXPECT_GT(sign * d2.x, 100.0) << name;
             // The sideways part reverses; the outward (+z) part of signing away from the body
