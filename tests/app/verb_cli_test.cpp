@@ -60,7 +60,7 @@ TEST(VerbCli, VerbJsonPrintsKeyframesPerHandForEveryVersion) {
         EXPECT_EQ(j["verb"], "EMAIL");
         EXPECT_EQ(j["version"], version);
         for (const char* hand : {"right", "left"}) {
-            ASSERT_EQ(j["hands"][hand].size(), 2u) << version;
+            ASSERT_EQ(j["hands"][hand].size(), 4u) << version;  // EMAIL's four keyframes (scenes/verbs.json)
             const auto& key = j["hands"][hand][1];
             EXPECT_EQ(key["position"].size(), 3u);
             EXPECT_EQ(key["orientation"].size(), 4u);

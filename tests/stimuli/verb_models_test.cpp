@@ -65,10 +65,13 @@ TEST(VerbLibrary, HasTheEightVerbsOfThePaperWithTheirClassAndHands) {
         ASSERT_NE(verb, nullptr) << name;
         EXPECT_EQ(verb->inflection, inflection) << name;
         EXPECT_EQ(verb->handCount(), hands) << name;
-        EXPECT_EQ(verb->keyframeCount(), 2u) << name;
+        // EMAIL: the swing from the subject, the index's aim at the C, its slide in and back out;
+        // COPY: the touch on the base palm, the lift off it, the closing hand's pull away.
+        EXPECT_EQ(verb->keyframeCount(), name == "EMAIL" ? 4u : name == "COPY" ? 3u : 2u) << name;
     }
     EXPECT_EQ(verbs.find("ASK")->citation[0][0].handshape, "1");
     EXPECT_EQ(verbs.find("ASK")->citation[0][1].handshape, "X");  // the index finger bends
+    EXPECT_EQ(verbs.find("EMAIL")->citation[0][0].handshape, "1");  // ASL-LEX 2.0 'email': 1 on a C base
     EXPECT_EQ(verbs.find("EMAIL")->citation[1][0].handshape, "C");
 }
 
@@ -232,8 +235,9 @@ TEST(VerbModels, SwappingSubjectAndObjectReversesThePathDirection) {
         for (const auto predict : {&predictPoint, &predictVector}) {
             const auto forward = predict(model, 0.9, -0.6);
             const auto backward = predict(model, -0.6, 0.9);
-            const glm::dvec3 d1 = forward[0][1].positionMm - forward[0][0].positionMm;
-            const glm::dvec3 d2 = backward[0][1].positionMm - backward[0][0].positionMm;
+            // From the first key to the last (COPY lifts off the palm on the way).
+            const glm::dvec3 d1 = forward[0].back().positionMm - forward[0].front().positionMm;
+            const glm::dvec3 d2 = backward[0].back().positionMm - backward[0].front().positionMm;
             EXPECT_LT(sign * d1.x, -100.0) << name;  // toward the object on the left
             EXPECT_GT(sign * d2.x, 100.0) << name;
             // The sideways part reverses; the outward (+z) part of signing away from the body
@@ -246,14 +250,20 @@ TEST(VectorModel, TheStartRunsThroughTheMostLikelyRegionAndKeepsTheHandsTogether
     const VerbModel& model = *shippedModels().find("EMAIL");
     const auto poses = predictVector(model, 0.9, -0.6);
     const glm::dvec3 start = poses[0][0].positionMm;
-    const std::vector<glm::dvec3> offsets{glm::dvec3(0), poses[0][1].positionMm - start};
-    const auto score = [&](const glm::dvec3& p) { return model.vector.rightLocation.sumLogDensity(pathSamples({p, p + offsets[1]})); };
+    // Every keyframe of the path (EMAIL's four: swing, aim, slide in, back out).
+    std::vector<glm::dvec3> offsets;
+    for (const HandPose& key : poses[0]) offsets.push_back(key.positionMm - start);
+    const auto score = [&](const glm::dvec3& p) {
+        std::vector<glm::dvec3> path;
+        for (const glm::dvec3& offset : offsets) path.push_back(p + offset);
+        return model.vector.rightLocation.sumLogDensity(pathSamples(path));
+    };
     for (const glm::dvec3& step : {glm::dvec3(5, 0, 0), glm::dvec3(0, 5, 0), glm::dvec3(0, 0, 5)}) {
         EXPECT_GE(score(start), score(start + step));
         EXPECT_GE(score(start), score(start - step));
     }
     // The left hand is placed relative to the right one (SPEC §3.5).
-    for (std::size_t k = 0; k < 2; ++k)
+    for (std::size_t k = 0; k < poses[0].size(); ++k)
         EXPECT_LT(glm::length(poses[1][k].positionMm - poses[0][k].positionMm - model.vector.leftRelative[k](0.9, -0.6)), 1e-9);
     EXPECT_GE(model.vector.rightLocation.components.size(), 1u);
 }
