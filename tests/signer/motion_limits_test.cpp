@@ -29,6 +29,7 @@
 #include <map>
 #include <memory>
 #include <thread>
+#include <vector>
 
 using namespace signstim;
 

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 using namespace signstim;
 
@@ -30,15 +31,10 @@ const std::filesystem::path kScenes = std::filesystem::path(SIGNSTIM_SOURCE_DIR)
 // (HOW was fixed, 2026-11-27, 52.0 mm -> 5.2: hand:finger-back lay halfway along the chord from
 // the knuckle to the middle fingertip, inside a C's curve, so putting the two places together
 // put the fingers into each other; on the finger's back surface the bent fingers' backs meet.)
-// CHANGE: the X hands' fists, palm to palm, lie in each other (thumbs, curled fingers 17-21 mm)
-//   when the hooked index tips meet on the midline: the hooks do not reach past the fists. The
-//   citation form meets one hand above the other, which mirrored hands cannot; with the palms
-//   down and in (2026-11-27) the hooks lead and the fists meet 17.7 mm short (70.0 before; 28
-//   orientations tried: 17.7-131 mm). With leftOffset (2026-11-27, one hand above the other,
-//   exchanging places by endLeftOffset, palms facing): tips stacked one over the other stay a
-//   fingertip's thickness apart (16 mm); the right hook's tip onto the top of the left fist
-//   (hand:radial) misses by 10.9 posed / 16.6 keyed at best, since with the palm in the hook is
-//   the top of the X fist and the right fist's curled fingers land first. Left as it was.
+// (CHANGE was fixed, 2026-11-27, 17.7 mm -> 6.8: palm to palm its X fists lay in each other
+// when the hooked index tips met, and one above the other the tips stayed a fingertip's
+// thickness apart; palms down, the index fingers' thumb sides meet (hand:radial) and the hands
+// twist together.)
 // (GET was fixed, 2026-11-27, 10.7 mm -> 6.0: side by side, its S fists lay in each other at the
 // thumbs and curled fingers; it now stacks them as the entry does, the right fist's little-finger
 // edge on the left's thumb side, the left hand offset below its mirror image by leftOffset.)
@@ -49,9 +45,8 @@ struct KnownPosed {
     const char* sign;
     double contactMm, orientationDeg;
 };
-const KnownPosed kKnownPosed[] = {
-    {"CHANGE", 17.7, 0},
-};
+// None now; add {sign, contactMm, orientationDeg} with its measured cause above.
+const std::vector<KnownPosed> kKnownPosed{};
 
 std::optional<KnownPosed> known(const std::string& gloss) {
     for (const KnownPosed& k : kKnownPosed)
