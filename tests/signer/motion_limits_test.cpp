@@ -791,8 +791,7 @@ void checkVerbSlotClearance(const signer::SignerRig& rig, const signer::Timeline
 // hands go -22.4 mm deep (-18.9 without it; -22.8 with the torso's push): its line is -23
 // (was -19).
 // And the hands' touches that settling leaves deeper than kContactDepthToleranceMm: none now,
-// COPY's and EMAIL's left on 2026-11-27 (below); EMAIL's new form has breaks of its own at the
-// arc's far ends (see kKnownVerbBreaks).
+// COPY's and EMAIL's left on 2026-11-27 (below).
 // Those touches are not settling's failure: the data asks for a path through the other hand (measured 2026-11-27 on the capsules, session 12):
 //  - COPY s=-1 o=0.5: the right hand leaves the base palm 15 mm clear and 0.1 s into the
 //    stroke its spread 5 sweeps through the base B's fingers (-18 mm in a story at those
@@ -820,18 +819,14 @@ struct KnownVerbBreak {
     bool hands;
     float deepestMm;
 };
-// EMAIL's new form with the signer's comfortable reach (measured 2026-11-27, after both were
-// merged): where the subject or object is at the arc's far end, withinComfortableReach pulls
-// each hand's keys toward its own shoulder, so the right index's slide key moves without the
-// C it slides into and the index passes through the C's wall (point: 22 instances with |s| or
-// |o| >= 0.5 and the other at the far end, -3.1 to -18.4 mm; vector: 2, s=-0.9/-1 o=1). Pulling
-// both hands of a keyed pair by one offset (as out of the torso) took 19 of the 24 out but put
-// SEND point's left key 18 mm beyond its arm's reach (s=-1 o=-0.9): not kept. The default
-// stories' EMAIL instances are clean (StoryClearance; story --check: no warning).
-const std::vector<KnownVerbBreak> kKnownVerbBreaks{
-    {"EMAIL", "point", true, -18.5f},   // s=0.9 o=1.0 (after key 0)
-    {"EMAIL", "vector", true, -6.5f},   // s=-1.0 o=1.0 (at key 2)
-};
+// EMAIL's new form had 24 breaks of its own here once the sweep played the signer's reach
+// (2026-11-27): at the arc's far ends the performer turned the C and the slide half the way to
+// the object (towardObject 0.5), the left arm held the C out at the object's side, and the
+// comfortable reach pulled the index's keys without the C through its wall (point -18.4 mm,
+// vector -6.2). A fifth of the way (scenes/corpus/reference_performer.json; corpus and models
+// regenerated) keeps the C before the body: none left (hands >= 4.3 mm over the grid).
+// None now; add {verb, version, hands, deepestMm} with the measured cause above.
+const std::vector<KnownVerbBreak> kKnownVerbBreaks{};
 
 }  // namespace
 
