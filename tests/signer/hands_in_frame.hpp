@@ -9,6 +9,14 @@
 
 namespace signstim::test {
 
+// The views issue 21 §2 checks (every aspect: 4:3 and 16:9), the same in the in-frame tests of
+// stories, of signs alone and of the verb grid.
+struct FrameAspect {
+    const char* name;
+    std::uint32_t width, height;
+};
+inline constexpr FrameAspect kFrameAspects[] = {{"4:3", 640, 480}, {"16:9", 640, 360}};
+
 // " right hand past the left edge left hand past the bottom" ..., or empty when both hands'
 // screen boxes (signer/screen_regions.hpp: fingertips included, with its margin) lie inside a
 // width x height view. A box clipped by the view touches its edge: part of the hand is outside.

@@ -183,15 +183,11 @@ struct VerbGrid {
     std::vector<std::string> outOfFrame;
 };
 
-// The aspects of issue 21's in-frame property, as the in-frame tests of stories and signs
-// alone check them (tests/signer/story_in_frame_test.cpp), at 30 fps: the rate the default
-// study renders at; the frames are every other one of the 60 fps sweep (the same instants, so
-// the arm solutions come from the rig's memory).
-struct FrameAspect {
-    const char* name;
-    std::uint32_t width, height;
-};
-constexpr FrameAspect kFrameAspects[] = {{"4:3", 640, 480}, {"16:9", 640, 360}};
+// Issue 21's in-frame property in the aspects the in-frame tests of stories and signs alone
+// check (test::kFrameAspects, hands_in_frame.hpp), at 30 fps: the rate the default study
+// renders at; the frames are every other one of the 60 fps sweep (the same instants, so the
+// arm solutions come from the rig's memory).
+using test::kFrameAspects;
 constexpr double kInFrameFramesPerSecond = 30.0;
 
 // Every figure of `from` into `into` (the larger, with where).
@@ -248,7 +244,7 @@ const VerbGrid& verbGrid() {
         const signer::ScreenRegionModel regions(f.signer.avatar(), f.signer.rig());
         std::vector<render::Camera> cameras;
         std::vector<render::ViewCell> cells;
-        for (const FrameAspect& a : kFrameAspects) {
+        for (const test::FrameAspect& a : kFrameAspects) {
             cameras.push_back(signer::clipCamera(f.signer.avatar(), f.signer.rig(), a.width, a.height, 1, 1));
             cells.push_back(render::viewCell(a.width, a.height, 1, 1, 0));
         }
@@ -787,9 +783,7 @@ void checkVerbSlotClearance(const signer::SignerRig& rig, const signer::Timeline
 // withinReach, given the rig's torso by signer::signerReach), and this sweep plays each
 // instance with the signer's reach as stories and `verb --out` do (before, without it): no
 // hand-body line is left (the closest approach 4.1 mm, SEND vector s=-1 o=-0.5; GIVE vector
-// s=-1 o=-0.8 4.6 mm in its lead-in; 36 stretches in all). With the reach EMAIL point s=1 o=0's
-// hands go -22.4 mm deep (-18.9 without it; -22.8 with the torso's push): its line is -23
-// (was -19).
+// s=-1 o=-0.8 4.6 mm in its lead-in).
 // And the hands' touches that settling leaves deeper than kContactDepthToleranceMm: none now,
 // COPY's and EMAIL's left on 2026-11-27 (below).
 // Those touches are not settling's failure: the data asks for a path through the other hand (measured 2026-11-27 on the capsules, session 12):

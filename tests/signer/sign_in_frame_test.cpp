@@ -84,11 +84,7 @@ const KnownElbow kKnownElbowAboveShoulder[] = {
     {"HEARING", 48.0},   {"COUSIN", 38.2},    {"STUDENT", 28.7},  {"BETTER", 26.3},    {"TEACH", 25.4},
 };
 
-struct Aspect {
-    const char* name;
-    std::uint32_t width, height;
-};
-const Aspect kAspects[] = {{"4:3", 640, 480}, {"16:9", 640, 360}};
+using test::kFrameAspects;
 
 }  // namespace
 
@@ -105,7 +101,7 @@ TEST(SignInFrame, EverySignAloneKeepsBothHandsInsideTheWaistUpFrameAndItsElbowsD
     const signer::SignerRig& rig = w.signer.rig();
     std::vector<render::Camera> cameras;
     std::vector<render::ViewCell> cells;
-    for (const Aspect& a : kAspects) {
+    for (const test::FrameAspect& a : kFrameAspects) {
         cameras.push_back(signer::clipCamera(w.signer.avatar(), rig, a.width, a.height, 1, 1));
         cells.push_back(render::viewCell(a.width, a.height, 1, 1, 0));
     }
@@ -125,8 +121,8 @@ TEST(SignInFrame, EverySignAloneKeepsBothHandsInsideTheWaistUpFrameAndItsElbowsD
         const signer::TimelineClip clip(rig, signAlone(gloss));
         const signer::ClipPoser poser(rig, clip);
         const int total = static_cast<int>(std::floor(clip.durationSeconds() * 30.0 + 1e-9));
-        int outside[std::size(kAspects)] = {};
-        std::string first[std::size(kAspects)];
+        int outside[std::size(kFrameAspects)] = {};
+        std::string first[std::size(kFrameAspects)];
         double aboveShoulder = -1e9, aboveShoulderAt = 0.0, aboveBound = -1e9, aboveBoundAt = 0.0;
         for (int f = 0; f <= total; ++f) {
             const double t = f / 30.0;
@@ -139,17 +135,17 @@ TEST(SignInFrame, EverySignAloneKeepsBothHandsInsideTheWaistUpFrameAndItsElbowsD
                 if (shoulder > aboveShoulder) aboveShoulder = shoulder, aboveShoulderAt = t;
                 if (bound > aboveBound) aboveBound = bound, aboveBoundAt = t;
             }
-            for (std::size_t a = 0; a < std::size(kAspects); ++a) {
+            for (std::size_t a = 0; a < std::size(kFrameAspects); ++a) {
                 const std::string where = test::handsOutOfFrame(w.regions.boxes(pose, cameras[a], cells[a]),
-                                                                kAspects[a].width, kAspects[a].height);
+                                                                kFrameAspects[a].width, kFrameAspects[a].height);
                 if (!where.empty() && outside[a]++ == 0) first[a] = where;
             }
         }
         EXPECT_GT(total, 30) << gloss;
         char line[240];
-        for (std::size_t a = 0; a < std::size(kAspects); ++a)
+        for (std::size_t a = 0; a < std::size(kFrameAspects); ++a)
             if (outside[a] > 0) {
-                std::snprintf(line, sizeof line, "\n  %s at %s: %d of %d frames:", gloss.c_str(), kAspects[a].name,
+                std::snprintf(line, sizeof line, "\n  %s at %s: %d of %d frames:", gloss.c_str(), kFrameAspects[a].name,
                               outside[a], total + 1);
                 outOfFrame += line + first[a];
             }
@@ -167,7 +163,7 @@ TEST(SignInFrame, EverySignAloneKeepsBothHandsInsideTheWaistUpFrameAndItsElbowsD
         if (isKnown && aboveShoulder < held - 0.5) improved += line;
     }
     std::printf("%zu signs alone, %ld frames at 30 fps, each in %zu aspects\n", glosses.size(), framesChecked,
-                std::size(kAspects));
+                std::size(kFrameAspects));
     EXPECT_TRUE(outOfFrame.empty()) << "a hand (fingertips included) leaves the waist-up frame:" << outOfFrame;
     EXPECT_TRUE(elbowHigh.empty()) << "an elbow more than " << kElbowAboveShoulderOrWristMm
                                    << " mm above both its shoulder joint and its wrist:" << elbowHigh;

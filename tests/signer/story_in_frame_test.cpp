@@ -37,11 +37,7 @@ const stimuli::VerbVersion kVersions[] = {stimuli::VerbVersion::Point, stimuli::
                                           stimuli::VerbVersion::Animator, stimuli::VerbVersion::Uninflected};
 constexpr double kFramesPerSecond = 30.0;
 
-struct Aspect {
-    const char* name;
-    std::uint32_t width, height;
-};
-const Aspect kAspects[] = {{"4:3", 640, 480}, {"16:9", 640, 360}};
+using test::kFrameAspects;
 
 // Frames where a hand leaves the frame, held at what they are measured ("story-NN version
 // aspect" -> frames) with their cause; the test fails when one grows or a new one appears.
@@ -101,7 +97,7 @@ TEST(StoryInFrame, BothHandsStayInsideTheWaistUpFrameAtEveryAspectInEveryStoryAn
 
     std::vector<render::Camera> cameras;
     std::vector<render::ViewCell> cells;
-    for (const Aspect& a : kAspects) {
+    for (const test::FrameAspect& a : kFrameAspects) {
         cameras.push_back(signer::clipCamera(signer.avatar(), signer.rig(), a.width, a.height, 1, 1));
         cells.push_back(render::viewCell(a.width, a.height, 1, 1, 0));
     }
@@ -121,15 +117,15 @@ TEST(StoryInFrame, BothHandsStayInsideTheWaistUpFrameAtEveryAspectInEveryStoryAn
             const signer::TimelineClip clip(signer.rig(), stimuli::buildTimeline(story, v, sources));
             const signer::ClipPoser poser(signer.rig(), clip);
             const int total = static_cast<int>(std::floor(clip.durationSeconds() * kFramesPerSecond + 1e-9));
-            std::vector<int> outside(std::size(kAspects), 0);
-            std::vector<std::string> runs(std::size(kAspects));
-            std::vector<int> lastOut(std::size(kAspects), -2);
+            std::vector<int> outside(std::size(kFrameAspects), 0);
+            std::vector<std::string> runs(std::size(kFrameAspects));
+            std::vector<int> lastOut(std::size(kFrameAspects), -2);
             for (int f = 0; f <= total; ++f) {
                 const double t = f / kFramesPerSecond;
                 const render::Pose pose = poser.next(t);
                 ++framesChecked;
-                for (std::size_t ai = 0; ai < std::size(kAspects); ++ai) {
-                    const Aspect& a = kAspects[ai];
+                for (std::size_t ai = 0; ai < std::size(kFrameAspects); ++ai) {
+                    const test::FrameAspect& a = kFrameAspects[ai];
                     const std::array<signer::ScreenBox, 4> boxes = regions.boxes(pose, cameras[ai], cells[ai]);
                     const std::string edge = test::handsOutOfFrame(boxes, a.width, a.height);
                     if (edge.empty()) continue;
@@ -143,9 +139,9 @@ TEST(StoryInFrame, BothHandsStayInsideTheWaistUpFrameAtEveryAspectInEveryStoryAn
                     lastOut[ai] = f;
                 }
             }
-            for (std::size_t ai = 0; ai < std::size(kAspects); ++ai) {
+            for (std::size_t ai = 0; ai < std::size(kFrameAspects); ++ai) {
                 const std::string name =
-                    file.stem().string() + " " + stimuli::toString(v) + " " + kAspects[ai].name;
+                    file.stem().string() + " " + stimuli::toString(v) + " " + kFrameAspects[ai].name;
                 const auto held = known.find(name);
                 const int allowed = held == known.end() ? 0 : held->second;
                 std::printf("%-32s %4d of %4d frames out (held at %d)\n", name.c_str(), outside[ai], total + 1,
@@ -160,7 +156,7 @@ TEST(StoryInFrame, BothHandsStayInsideTheWaistUpFrameAtEveryAspectInEveryStoryAn
             }
         }
     }
-    std::printf("%ld frames at %.0f fps, each in %zu aspects\n", framesChecked, kFramesPerSecond, std::size(kAspects));
+    std::printf("%ld frames at %.0f fps, each in %zu aspects\n", framesChecked, kFramesPerSecond, std::size(kFrameAspects));
     EXPECT_GT(framesChecked, 48L * 30L);
     EXPECT_TRUE(known.empty()) << "kKnownOut names a clip that is not a default story x version x aspect: "
                                << known.begin()->first;
