@@ -71,9 +71,11 @@ struct Geometry {
     float cosAlpha, sinAlpha;  // angle at the shoulder between the axis and the upper arm
 };
 
-// Issue 21: the elbow never above its shoulder joint unless the hand is higher, and then no
-// higher than the wrist. The elbow's height is h0 + A·cos(swivel − φ) on its circle about the
-// shoulder–wrist axis; the swivels that keep it at or below max(shoulder, wrist) are an arc, and
+// Issue 21: the elbow never above its shoulder joint unless the hand is above the head, and then
+// no higher than the wrist is above the top of the head (ArmModel::elbowRiseWristAboveShoulderMm;
+// until 2026-11-27 the cap was the wrist itself, and a hand at the face lifted the elbow up to
+// 236 mm over the shoulder: BOY). The elbow's height is h0 + A·cos(swivel − φ) on its circle about
+// the shoulder–wrist axis; the swivels that keep it at or below the cap are an arc, and
 // a swivel outside it is moved to the arc's nearer end (or to the lowest swivel where no swivel
 // is low enough). Continuous in the swivel and the target, so a pose stays a continuous
 // function of time.
@@ -83,7 +85,7 @@ float capElbowHeight(const Geometry& g, float swivel) {
     const float c = a * g.sinAlpha * g.ref0.y, s = a * g.sinAlpha * g.ref1.y;  // h = h0 + c·cos + s·sin
     const float amplitude = std::sqrt(c * c + s * s);
     if (amplitude < 1e-3f) return swivel;
-    const float cap = std::max(0.0f, g.wrist.y - g.shoulder.y);
+    const float cap = std::max(0.0f, g.wrist.y - g.shoulder.y - g.arm->elbowRiseWristAboveShoulderMm);
     const float phi = std::atan2(s, c);  // the highest swivel
     const float ratio = (cap - h0) / amplitude;
     if (ratio >= 1.0f) return swivel;  // never above the cap
@@ -131,11 +133,9 @@ Candidate evaluate(const Geometry& g, float swivel, bool frames = true) {
     const float inFront = smoothstep(arm.torsoFrontMm, arm.torsoFrontMm + 60.0f, c.elbowMm.z);
     const float torsoDeficit =
         (1.0f - inFront) * std::max(0.0f, arm.minElbowLateralMm - glm::dot(c.elbowMm, side)) / 50.0f;
-    const float elbowRise = std::max(0.0f, c.elbowMm.y - std::max(g.shoulder.y, g.wrist.y)) / 100.0f;
     c.cost = g.options->poleWeight * s * s + g.options->wristComfortWeight * wristCost +
              g.options->shoulderLimitWeight * shoulderRad * shoulderRad +
-             g.options->torsoWeight * torsoDeficit * torsoDeficit +
-             g.options->elbowHeightWeight * elbowRise * elbowRise;
+             g.options->torsoWeight * torsoDeficit * torsoDeficit;
     return c;
 }
 

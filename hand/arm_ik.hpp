@@ -79,6 +79,12 @@ struct ArmModel {
     // (x = 0) toward its own side, unless it is well in front of the chest.
     float minElbowLateralMm = 110.0f;
     float torsoFrontMm = 140.0f;  // elbows further forward than this may cross the midline
+    // Issue 21: the elbow never above the shoulder unless the hand is above the head. The
+    // elbow may rise above its shoulder joint only by as much as the wrist is higher than this
+    // above the shoulder joint: the top of the head (the rig sets it from the avatar's eyes).
+    // [D] 300 mm for the default signer without a rig (Drillis & Contini: shoulder 0.818·H,
+    // vertex 1.0·H, less the acromion's 40 mm above the joint centre).
+    float elbowRiseWristAboveShoulderMm = 300.0f;
 };
 
 // Default arms of the default signer (stature 1750 mm), mirrored about the body midline.
@@ -97,7 +103,8 @@ struct ArmSolveOptions {
     // the swivel moves at most maxSwivelStepDeg from it, so the elbow never flips between
     // neighbouring frames. maxSwivelStepDeg <= 0: the elbow takes the given direction itself
     // (about the shoulder-wrist axis), no search. Either way the elbow stays at or below
-    // max(shoulder, wrist) (issue 21), the swivel moved to the nearest that does.
+    // its shoulder unless the wrist is above the head (ArmModel::elbowRiseWristAboveShoulderMm,
+    // issue 21), the swivel moved to the nearest that does.
     std::optional<glm::vec3> previousElbowDirection;
     float maxSwivelStepDeg = 20.0f;
     // [D] The window yields where the hand's orientation is out of the wrist's reach at the
@@ -121,11 +128,8 @@ struct ArmSolveOptions {
     float wristComfortWeight = 0.3f;
     float shoulderLimitWeight = 20.0f;
     float torsoWeight = 20.0f;
-    // [D] The elbow above both its shoulder joint and the wrist, per 100 mm: a signer lifts
-    // the elbow above the shoulder only as far as a raised hand takes it, not as the arm's
-    // highest point; the wrist bends (to its limits) instead. Moderate: stronger, the hands of
-    // contact signs at the forehead (HUSBAND) sink into it.
-    float elbowHeightWeight = 20.0f;
+    // (No cost on the elbow's height: the cap of ArmModel::elbowRiseWristAboveShoulderMm holds
+    // every swivel the search tries at or below it, so a cost above it could never act.)
 };
 
 struct ArmPose {

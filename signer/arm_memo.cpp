@@ -7,8 +7,8 @@ namespace {
 
 // The sizes of the inputs whose fields the key lists (x86-64, gcc and clang): a field added to
 // one of them changes its size, and the memory is bypassed until the key lists it too.
-constexpr bool kKnownSizes = sizeof(hand::ArmModel) == 92 && sizeof(hand::ArmTarget) == 28 &&
-                             sizeof(hand::ArmSolveOptions) == 48 && sizeof(hand::ArmLimits) == 48;
+constexpr bool kKnownSizes = sizeof(hand::ArmModel) == 96 && sizeof(hand::ArmTarget) == 28 &&
+                             sizeof(hand::ArmSolveOptions) == 44 && sizeof(hand::ArmLimits) == 48;
 
 struct KeyWriter {
     std::array<std::uint32_t, 42>& key;
@@ -65,6 +65,7 @@ hand::ArmPose ArmMemo::solve(const hand::ArmModel& arm, const hand::ArmTarget& t
     w.add(arm.poleOutwardWhenHigh);
     w.add(arm.minElbowLateralMm);
     w.add(arm.torsoFrontMm);
+    w.add(arm.elbowRiseWristAboveShoulderMm);
     w.add(target.wristMm);
     w.add(target.handRotation);
     key[w.at++] = options.previousElbowDirection ? 1u : 0u;
@@ -76,7 +77,6 @@ hand::ArmPose ArmMemo::solve(const hand::ArmModel& arm, const hand::ArmTarget& t
     w.add(options.wristComfortWeight);
     w.add(options.shoulderLimitWeight);
     w.add(options.torsoWeight);
-    w.add(options.elbowHeightWeight);
     {
         const std::lock_guard<std::mutex> lock(mutex_);
         if (const auto found = newer_.find(key); found != newer_.end()) return found->second;

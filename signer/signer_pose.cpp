@@ -270,6 +270,10 @@ SignerRig::SignerRig(const render::Scene& scene, const BoneMapping& mapping, con
     gaze_.eyesMm = (position("head") - bodyOriginM_) * kMToMm + glm::vec3(0.0f, 115.0f, 78.0f);
     if (bones_.count("leftEye") && bones_.count("rightEye"))
         gaze_.eyesMm = (0.5f * (position("leftEye") + position("rightEye")) - bodyOriginM_) * kMToMm;
+    // The top of the head, above which a raised hand may take the elbow over the shoulder
+    // (hand::ArmModel::elbowRiseWristAboveShoulderMm). [S] Drillis & Contini: the eyes at
+    // 0.936·H, the vertex at 1.0·H, 112 mm above them at the default stature of 1750 mm.
+    for (hand::ArmModel& arm : arms_) arm.elbowRiseWristAboveShoulderMm = gaze_.eyesMm.y + 112.0f - arm.shoulderMm.y;
     // What the non-manuals move (signer_pose_nonmanual.cpp).
     morphTargets_ = morphTargetNames(scene);
     for (hand::Side side : {hand::Side::Right, hand::Side::Left})

@@ -5,7 +5,9 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 using namespace signstim::hand;
@@ -257,4 +259,68 @@ TEST(ArmIk, ReachedWristIsTheSolvedWristToTheBit) {
                 }
     }
     EXPECT_GT(count, 100);  // the clamped reach is among the cases
+}
+
+// Issue 21: "elbow never above shoulder height unless the sign's citation form puts the hand
+// above the head". Over a grid of wrists from the waist to above the head, and orientations a
+// signer asks at the face (fingers left and palm in, as across the forehead; fingers up and palm
+// forward, as beside the temple; fingers forward), the elbow stays at or below its shoulder
+// joint unless the wrist is higher than elbowRiseWristAboveShoulderMm above it, and then rises
+// no more than the wrist does beyond that; where no elbow is that low (the wrist close above
+// the shoulder), it is the lowest the arm allows. Without the cap (the rise set out of reach)
+// the same grid lifts the elbow, so the test sees the cap work.
+TEST(ArmIk, TheElbowStaysAtOrBelowTheShoulderUnlessTheWristIsAboveTheHead) {
+    const ArmModel arm = defaultArmModel(Side::Right);
+    ArmModel uncapped = arm;
+    uncapped.elbowRiseWristAboveShoulderMm = -1e6f;
+    const glm::quat orientations[] = {axes({0, 0, -1}, {1, 0, 0}), axes({0, 0, 1}, {0, 1, 0}), palmInFingersForward()};
+    const float a = arm.upperArmLengthMm, b = arm.forearmLengthMm;
+    int checked = 0, capBinds = 0, overHead = 0;
+    for (float y = -100.0f; y <= 460.0f; y += 40.0f)
+        for (float x = -360.0f; x <= 40.0f; x += 50.0f)
+            for (float z = 100.0f; z <= 400.0f; z += 60.0f)
+                for (const glm::quat& q : orientations) {
+                    const ArmTarget target{{x, y, z}, q};
+                    const ArmPose p = solveArm(arm, target);
+                    // The lowest elbow the arm allows for this wrist: the lowest point of the
+                    // elbow's circle about the shoulder-wrist axis.
+                    const glm::vec3 toWrist = p.wristMm - arm.shoulderMm;
+                    const float d = glm::length(toWrist);
+                    const glm::vec3 axis = toWrist / d;
+                    const float cosAlpha = std::clamp((a * a + d * d - b * b) / (2.0f * a * d), -1.0f, 1.0f);
+                    const float lowest = a * cosAlpha * axis.y - a * std::sqrt(1.0f - cosAlpha * cosAlpha) *
+                                                                     std::sqrt(std::max(0.0f, 1.0f - axis.y * axis.y));
+                    const float wristOverHead =
+                        std::max(0.0f, p.wristMm.y - arm.shoulderMm.y - arm.elbowRiseWristAboveShoulderMm);
+                    const float allowed = std::max(wristOverHead, lowest);
+                    EXPECT_LE(p.elbowMm.y - arm.shoulderMm.y, allowed + 0.5f)
+                        << "wrist " << x << " " << y << " " << z << ", lowest elbow " << lowest;
+                    expectWithinLimits(arm, p);
+                    ++checked;
+                    if (wristOverHead > 0.0f) ++overHead;
+                    if (solveArm(uncapped, target).elbowMm.y - arm.shoulderMm.y > allowed + 20.0f) ++capBinds;
+                }
+    EXPECT_GT(checked, 1000);
+    EXPECT_GT(overHead, 50);
+    EXPECT_GT(capBinds, 50) << "the grid never asks for a high elbow: it does not test the cap";
+    std::printf("%d targets, %d with the wrist above the head, %d where the cap lowers the elbow by more than 20 mm\n",
+                checked, overHead, capBinds);
+}
+
+// The cap is continuous in the wrist's height: as a raised hand passes the top of the head, the
+// elbow's allowance grows from zero, with no jump.
+TEST(ArmIk, TheElbowsAllowanceGrowsContinuouslyAsTheWristPassesTheTopOfTheHead) {
+    const ArmModel arm = defaultArmModel(Side::Right);
+    const glm::quat q = axes({0, 0, 1}, {0, 1, 0});  // fingers up, palm forward
+    float previous = 0.0f;
+    float highest = -1e9f;
+    for (int i = 0; i <= 200; ++i) {
+        const float y = arm.shoulderMm.y + arm.elbowRiseWristAboveShoulderMm - 60.0f + 1.0f * static_cast<float>(i);
+        const ArmPose p = solveArm(arm, {{-260.0f, y, 120.0f}, q});
+        const float elbow = p.elbowMm.y - arm.shoulderMm.y;
+        if (i > 0) EXPECT_LT(std::fabs(elbow - previous), 5.0f) << "wrist at " << y;
+        previous = elbow;
+        highest = std::max(highest, elbow);
+    }
+    EXPECT_GT(highest, 20.0f);  // the hand well above the head takes the elbow up with it
 }

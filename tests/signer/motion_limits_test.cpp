@@ -50,9 +50,10 @@ constexpr double kWristFlexionDeg = 80.0, kWristExtensionDeg = 70.0, kRadialDevi
                  kUlnarDeviationDeg = 35.0, kSupinationDeg = 90.0, kPronationDeg = 85.0, kSlackDeg = 1.0;
 // SPEC §6.2: peak wrist speed of natural signing.
 constexpr double kWristSpeedMmPerSecond = 2500.0;
-// [D] The elbow stays at or below its shoulder joint unless the sign says so: a hand raised
-// above the shoulder (HUSBAND at the forehead) takes the elbow up with it, but never higher
-// than the wrist. 10 mm for the IK's trade-offs at the limit.
+// Issue 21: the elbow never above shoulder height unless the hand is above the head
+// (motion::elbowAboveShoulderMm: over the head, the elbow may rise as far as the wrist is above
+// it). The arm solver caps the elbow there (hand/arm_ik.cpp, capElbowHeight); 10 mm [D] for a
+// wrist whose place leaves no elbow low enough, which the cap then holds as low as it can go.
 constexpr double kElbowAboveShoulderMm = 10.0;
 // [D] Between two frames at 60 fps the elbow turns about the shoulder-wrist axis (the axis's own
 // motion apart, tests/signer/motion_sampling.hpp) at most 15°: an elbow track turning at most
@@ -532,8 +533,9 @@ TEST(FrameRateIndependence, FramesOutsideTheVerbsAreTheSameInEveryVersion) {
 
 // Issue 21. Before the elbow's height cap (hand/arm_ik.cpp, capElbowHeight; 2026-11-26, 60 fps)
 // the elbow rose 63 mm above the shoulder in a fingerspelled P (story-04 point 1.48 s: its
-// "pointing down" orientation beyond the wrist's reach); now it never rises above
-// max(shoulder, wrist) (measured 0.00 mm).
+// "pointing down" orientation beyond the wrist's reach). The cap first held it at
+// max(shoulder, wrist), which let a hand at the face lift it (FORGET in story-01: 128 mm above
+// the shoulder); since 2026-11-27 it holds it at the shoulder unless the wrist is above the head.
 TEST(MotionLimits, EveryStoryFrameKeepsItsWristsAndElbowsWithinTheBodysLimits) {
     const Fixture& f = fixture();
     motion::MotionPeaks peaks;

@@ -27,7 +27,7 @@ struct Peak {
 };
 
 struct MotionPeaks {
-    Peak elbowAboveShoulderMm;       // elbow height above its shoulder joint or, where the hand is higher, the wrist
+    Peak elbowAboveShoulderMm;       // elbow height above its shoulder joint, less how far the wrist is above the head
     Peak elbowSwingDegPerFrame;      // change of the upper arm's direction between 60 fps frames
     Peak elbowTurnDegPerFrame;       // turn of the elbow's direction from the shoulder-wrist axis, per 60 fps frame
     Peak swivelStepDegPerFrame;      // turn of the elbow about the shoulder-wrist axis (the axis's own motion apart), per 60 fps frame
@@ -40,7 +40,7 @@ struct MotionPeaks {
     void print(const char* title) const {
         std::printf("%s\n", title);
         const auto line = [](const char* name, const Peak& p) { std::printf("  %-28s %9.2f  at %s\n", name, p.value, p.where.c_str()); };
-        line("elbow above shoulder/wrist (mm)", elbowAboveShoulderMm);
+        line("elbow above shoulder (mm)", elbowAboveShoulderMm);
         line("elbow swing (deg/frame@60)", elbowSwingDegPerFrame);
         line("elbow turn (deg/frame@60)", elbowTurnDegPerFrame);
         line("swivel (deg/frame@60)", swivelStepDegPerFrame);
@@ -65,6 +65,15 @@ inline double angleDeg(const glm::vec3& a, const glm::vec3& b) {
     return std::acos(c) * 180.0 / 3.14159265358979323846;
 }
 
+// Issue 21: "elbow never above shoulder height unless the sign's citation form puts the hand
+// above the head". How far the elbow is above its shoulder joint, less how far the wrist is above
+// the top of the head (hand::ArmModel::elbowRiseWristAboveShoulderMm), so a hand raised over the
+// head may take the elbow up with it; > 0 breaks the rule.
+inline double elbowAboveShoulderMm(const hand::ArmModel& arm, const hand::ArmPose& a) {
+    const double overHead = std::max(0.0, static_cast<double>(a.wristMm.y - a.shoulderMm.y) - arm.elbowRiseWristAboveShoulderMm);
+    return a.elbowMm.y - a.shoulderMm.y - overHead;
+}
+
 // Every instant f / fps of `clip` from 0 to its end, arms and gaze as the renderer poses them
 // (SignerRig::solveArm, the gaze of the posture); `name` labels the peaks.
 inline void measureClip(const signer::SignerRig& rig, const signer::Clip& clip, const std::string& name, double fps,
@@ -85,7 +94,8 @@ inline void measureClip(const signer::SignerRig& rig, const signer::Clip& clip, 
         for (const bool right : {true, false}) {
             const hand::ArmPose& a = right ? r.right : r.left;
             const std::string where = name + (right ? " right" : " left") + at;
-            peaks.elbowAboveShoulderMm.take(a.elbowMm.y - std::max(a.shoulderMm.y, a.wristMm.y), where);
+            peaks.elbowAboveShoulderMm.take(elbowAboveShoulderMm(rig.arm(right ? hand::Side::Right : hand::Side::Left), a),
+                                            where);
             peaks.wristFlexionDeg.take(a.wristFlexionDeg, where);
             peaks.wristExtensionDeg.take(-a.wristFlexionDeg, where);
             peaks.ulnarDeviationDeg.take(a.wristUlnarDeviationDeg, where);
