@@ -9,7 +9,7 @@
 #
 # The sweeps that cost minutes under ASan take a sample that still runs every code path
 # (SIGNSTIM_TEST_BREADTH=sanitizer, tests/test_breadth.hpp: 3 of the 12 default stories in the
-# motion tests, 6 of 20 loci pairs per verb slot, one seed of the mixed models' no-effect fits;
+# motion and clearance tests, 6 of 20 loci pairs per verb slot, one seed of the mixed models' no-effect fits;
 # docs/fuzzing.md); the gcc suite (./run.sh test)
 # sweeps them whole, and so does SIGNSTIM_TEST_BREADTH=full scripts/sanitize.sh.
 #
