@@ -1,4 +1,4 @@
-# Crash safety (issue 13 §4): SIGKILL at random moments, 20 per command; re-runs to the same bytes.
+# Crash safety (issue 13 §4): SIGKILL at 10 moments per command, one in each tenth of the run; re-runs to the same bytes.
 signstim_add_test(signstim_crash_tests
   SOURCES crash_test.cpp
   LIBS signstim_common signstim_test_run_command

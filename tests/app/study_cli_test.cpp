@@ -205,21 +205,24 @@ TEST(StudyCli, ThreeShardsMergedEqualOneRunByteForByte) {
     EXPECT_EQ(readFile(merged / "manifest.json"), readFile(reference / "manifest.json"));
     EXPECT_EQ(runSignstim("study verify " + shellQuote(merged.string())).status, 0);
 
-    // Two of the three shards are not the whole study: merge says which units are missing.
-    const fs::path partial = freshDir("partial");
-    const auto two = runSignstim("study merge " + shards[0] + " " + shards[1] + " --into " + shellQuote(partial.string()));
+    // Two of the three shards are not the whole study: merge says which units are missing (and
+    // has copied those it has into the folder).
+    const fs::path shared = freshDir("shared");
+    const auto two = runSignstim("study merge " + shards[0] + " " + shards[1] + " --into " + shellQuote(shared.string()));
     EXPECT_EQ(two.status, 2) << two.output;
     EXPECT_NE(two.output.find("units are in none of the folders"), std::string::npos) << two.output;
+    EXPECT_FALSE(fs::exists(shared / "manifest.json"));
 
-    // Shards of Slurm's environment form, all into one shared folder, then merge of that folder.
-    const fs::path shared = freshDir("shared");
-    for (int i = 1; i <= 2; ++i) {
-        const auto r = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(shared.string())),
-                                   Capture::StdoutAndStderr,
-                                   "SLURM_ARRAY_TASK_ID=" + std::to_string(i) + " SLURM_ARRAY_TASK_COUNT=2 SLURM_ARRAY_TASK_MIN=1");
-        ASSERT_EQ(r.status, 0) << r.output;
-    }
-    // The second shard completed the set, so its run already wrote the manifest.
+    // The missing shard in Slurm's environment form (task 3 of an array 1-3: shard 2/3), into
+    // that shared folder: it renders only the missing units (had it taken the task for another
+    // shard, its units would all be there and the set would stay incomplete), and as it
+    // completes the set its run writes the manifest. Then merge of that one folder. (The shard
+    // alone, not the whole study again as two tasks of an array 1-2 did: a third of the render.)
+    const auto last = runSignstim(study(shellQuote(kSmall) + " --quiet --out " + shellQuote(shared.string())),
+                                  Capture::StdoutAndStderr, "SLURM_ARRAY_TASK_ID=3 SLURM_ARRAY_TASK_COUNT=3 SLURM_ARRAY_TASK_MIN=1");
+    ASSERT_EQ(last.status, 0) << last.output;
+    EXPECT_NE(last.output.find("4 of 4 units rendered, 0 already complete (shard 2/3)"), std::string::npos) << last.output;
+    EXPECT_NE(last.output.find("study complete"), std::string::npos) << last.output;
     EXPECT_EQ(readFile(shared / "manifest.json"), readFile(reference / "manifest.json"));
     EXPECT_EQ(runSignstim("study merge " + shellQuote(shared.string())).status, 0);
 }

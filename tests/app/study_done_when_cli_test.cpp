@@ -1,7 +1,7 @@
 // Issue 24's "Done when", end to end with the built binary: one small study that asks its
 // questions in ASL (session.questions "asl", signed question and instruction clips) AND has a
 // human-video version renders, verifies, shards (2 shards merged equal one run byte for byte)
-// and resumes (an interrupted run, and a changed recording re-rendering only its own unit).
+// and resumes (an interrupted shard, and a changed recording re-rendering only its own unit).
 // The "human" recordings are SYNTHETIC: ffmpeg's procedural test pattern (lavfi testsrc2), no
 // person. Quick settings (64x64, 2 fps, no MSAA), 3 stories, 2 phase-2 sentences.
 #include "tests/app/run_command.hpp"
@@ -105,29 +105,35 @@ TEST(StudyDoneWhenCli, AslQuestionsAndAHumanVersionRenderVerifyShardAndResume) {
     EXPECT_NE(conditions.find("_version-human.mp4"), std::string::npos);
     EXPECT_NE(readFile(one / "participants" / "P01" / "P01_gorilla.csv").find("instructions-welcome.mp4"), std::string::npos);
 
-    // Shards: two halves merged are the one run, file for file and byte for byte.
-    for (int i = 0; i < 2; ++i) {
-        const auto r = runSignstim(study(file, dir / ("shard" + std::to_string(i)), " --quiet --shard " + std::to_string(i) + "/2"));
-        ASSERT_EQ(r.status, 0) << r.output;
-    }
-    const auto merge = runSignstim("study merge " + shellQuote((dir / "shard0").string()) + " " +
+    // Shards: two halves merged are the one run, file for file and byte for byte. The first half
+    // interrupted (SIGTERM once the instruction clips' unit, its first, is complete) and resumed:
+    // the resumed shard keeps what the cut run finished and renders the rest, and the merge still
+    // has the bytes of one run. (One render of the study for both checks; the interrupted run was
+    // a third, whole-study render before.)
+    const fs::path shard0 = dir / "shard0";
+    const auto killed = runShell("SIGNSTIM=" + shellQuote((fs::path(SIGNSTIM_BINARY_DIR) / "signstim").string()) +
+                                 "; \"$SIGNSTIM\" " + study(file, shard0, " --quiet --shard 0/2") + " & pid=$!; for i in $(seq 1 600); do [ -e " +
+                                 shellQuote((shard0 / ".signstim/units/instructions.json").string()) +
+                                 " ] && break; sleep 0.02; done; kill -TERM $pid; wait $pid; echo \"exit $?\"");
+    EXPECT_NE(killed.output.find("exit 143"), std::string::npos) << killed.output;
+    const auto resumed = runSignstim(study(file, shard0, " --quiet --shard 0/2"));
+    ASSERT_EQ(resumed.status, 0) << resumed.output;
+    // "N of 5 units rendered, K already complete (shard 0/2)": the cut run finished some, not all.
+    const std::size_t of = resumed.output.find(" of 5 units rendered, ");
+    ASSERT_NE(of, std::string::npos) << resumed.output;
+    const int rendered = std::stoi(resumed.output.substr(resumed.output.rfind(' ', of - 1) + 1));
+    const int kept = std::stoi(resumed.output.substr(of + std::string(" of 5 units rendered, ").size()));
+    EXPECT_GE(rendered, 1) << resumed.output;
+    EXPECT_GE(kept, 1) << resumed.output;
+    EXPECT_EQ(rendered + kept, 5) << resumed.output;
+    const auto second = runSignstim(study(file, dir / "shard1", " --quiet --shard 1/2"));
+    ASSERT_EQ(second.status, 0) << second.output;
+    const auto merge = runSignstim("study merge " + shellQuote(shard0.string()) + " " +
                                    shellQuote((dir / "shard1").string()) + " --into " + shellQuote((dir / "merged").string()));
     ASSERT_EQ(merge.status, 0) << merge.output;
     EXPECT_EQ(readFile(dir / "merged" / "manifest.json"), readFile(one / "manifest.json"));
     EXPECT_TRUE(filesOf(dir / "merged") == filesOf(one)) << "the merged folder's files differ from one run's";
     EXPECT_EQ(runSignstim("study verify " + shellQuote((dir / "merged").string())).status, 0);
-
-    // Interrupted (SIGTERM once the instruction clips' unit is complete), then resumed: the bytes of one run.
-    const fs::path cut = dir / "interrupted";
-    const auto killed = runShell("SIGNSTIM=" + shellQuote((fs::path(SIGNSTIM_BINARY_DIR) / "signstim").string()) +
-                                 "; \"$SIGNSTIM\" " + study(file, cut, " --quiet") + " & pid=$!; for i in $(seq 1 600); do [ -e " +
-                                 shellQuote((cut / ".signstim/units/instructions.json").string()) +
-                                 " ] && break; sleep 0.02; done; kill -TERM $pid; wait $pid; echo \"exit $?\"");
-    EXPECT_NE(killed.output.find("exit 143"), std::string::npos) << killed.output;
-    EXPECT_FALSE(fs::exists(cut / "manifest.json"));
-    const auto resumed = runSignstim(study(file, cut, " --quiet"));
-    ASSERT_EQ(resumed.status, 0) << resumed.output;
-    EXPECT_EQ(readFile(cut / "manifest.json"), readFile(one / "manifest.json"));
 
     // Nothing changed: nothing rendered. Story 2's recording replaced (a question's gloss would be
     // another design, refused for this folder): its story unit only; the question and instruction
