@@ -318,7 +318,9 @@ TEST(ArmIk, TheElbowsAllowanceGrowsContinuouslyAsTheWristPassesTheTopOfTheHead) 
         const float y = arm.shoulderMm.y + arm.elbowRiseWristAboveShoulderMm - 60.0f + 1.0f * static_cast<float>(i);
         const ArmPose p = solveArm(arm, {{-260.0f, y, 120.0f}, q});
         const float elbow = p.elbowMm.y - arm.shoulderMm.y;
-        if (i > 0) EXPECT_LT(std::fabs(elbow - previous), 5.0f) << "wrist at " << y;
+        if (i > 0) {
+            EXPECT_LT(std::fabs(elbow - previous), 5.0f) << "wrist at " << y;
+        }
         previous = elbow;
         highest = std::max(highest, elbow);
     }
