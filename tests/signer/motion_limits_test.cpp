@@ -76,16 +76,9 @@ const SignerAndScenes& signerAndScenes() {
     return s;
 }
 
-// Under SIGNSTIM_TEST_BREADTH=sanitizer (scripts/sanitize.sh; tests/test_breadth.hpp) three
-// stories instead of twelve: the ones the full sweep names for their extremes (story-01 the
-// slowest pace, story-06 IX -> EMAIL, story-10 BOSS -> NICE, the fastest wrists before pacing),
-// which between them have fingerspelling, settled touches, routed transitions and every verb
-// slot kind the timeline code takes.
-bool inSample(const std::filesystem::path& story) {
-    if (!test::sanitizerBreadth()) return true;
-    const std::string stem = story.stem().string();
-    return stem == "story-01" || stem == "story-06" || stem == "story-10";
-}
+// Under SIGNSTIM_TEST_BREADTH=sanitizer (scripts/sanitize.sh) three stories instead of twelve
+// (test::storySwept, tests/test_breadth.hpp).
+bool inSample(const std::filesystem::path& story) { return test::storySwept(story.stem().string()); }
 
 struct Fixture {
     const signer::Signer& signer = signerAndScenes().signer;

@@ -84,16 +84,10 @@ TEST(StoryInFrame, BothHandsStayInsideTheWaistUpFrameAtEveryAspectInEveryStoryAn
         if (entry.path().extension() == ".json") files.push_back(entry.path());
     std::sort(files.begin(), files.end());
     ASSERT_EQ(files.size(), 12u);
-    // Under SIGNSTIM_TEST_BREADTH=sanitizer (tests/test_breadth.hpp) the motion tests' sample of
-    // three stories (story-01, story-06, story-10): every code path,
-    // a quarter of the CPU.
-    if (test::sanitizerBreadth()) {
-        std::erase_if(files, [](const std::filesystem::path& f) {
-            const std::string stem = f.stem().string();
-            return stem != "story-01" && stem != "story-06" && stem != "story-10";
-        });
-        test::noteSanitizerBreadth("3 of the 12 default stories");
-    }
+    // Under SIGNSTIM_TEST_BREADTH=sanitizer the motion tests' sample of three stories
+    // (test::storySwept, tests/test_breadth.hpp): every code path, a quarter of the CPU.
+    std::erase_if(files, [](const std::filesystem::path& f) { return !test::storySwept(f.stem().string()); });
+    test::noteSanitizerBreadth("3 of the 12 default stories");
 
     std::vector<render::Camera> cameras;
     std::vector<render::ViewCell> cells;
