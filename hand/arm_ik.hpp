@@ -82,9 +82,10 @@ struct ArmModel {
     // Issue 21: the elbow never above the shoulder unless the hand is above the head. The
     // elbow may rise above its shoulder joint only by as much as the wrist is higher than this
     // above the shoulder joint: the top of the head (the rig sets it from the avatar's eyes).
-    // [D] 300 mm for the default signer without a rig (Drillis & Contini: shoulder 0.818·H,
-    // vertex 1.0·H, less the acromion's 40 mm above the joint centre).
-    float elbowRiseWristAboveShoulderMm = 300.0f;
+    // 340 mm where no rig sets it: the rig measures 337 mm on the default signer (signer_pose.cpp);
+    // [S] Drillis & Contini at 1750 mm give 358 (the vertex 0.182·H above the acromion, which is
+    // ~40 mm above the joint centre).
+    float elbowRiseWristAboveShoulderMm = 340.0f;
 };
 
 // Default arms of the default signer (stature 1750 mm), mirrored about the body midline.

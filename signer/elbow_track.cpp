@@ -26,8 +26,8 @@ glm::vec3 across(const glm::vec3& v, const glm::vec3& axis, const glm::vec3& fal
 // `to` without turning about it (each step the least rotation that takes one axis to the next),
 // and the signed turn about the axis at `to` from the carried elbow to the solver's there, the
 // way whose middle lies lower (the solver keeps the elbow at or below its shoulder, unless the
-// wrist is above the head, by
-// moving a higher one to the nearer end of the allowed arc: a turn over the top would flip).
+// wrist is above the head, by moving a higher one to the nearer end of the allowed arc: a turn
+// over the top would flip).
 struct Carried {
     std::vector<glm::vec3> elbows;  // samples from..to
     float turnRad = 0.0f;

@@ -276,7 +276,7 @@ TEST(ArmIk, TheElbowStaysAtOrBelowTheShoulderUnlessTheWristIsAboveTheHead) {
     const glm::quat orientations[] = {axes({0, 0, -1}, {1, 0, 0}), axes({0, 0, 1}, {0, 1, 0}), palmInFingersForward()};
     const float a = arm.upperArmLengthMm, b = arm.forearmLengthMm;
     int checked = 0, capBinds = 0, overHead = 0;
-    for (float y = -100.0f; y <= 460.0f; y += 40.0f)
+    for (float y = -100.0f; y <= 540.0f; y += 40.0f)
         for (float x = -360.0f; x <= 40.0f; x += 50.0f)
             for (float z = 100.0f; z <= 400.0f; z += 60.0f)
                 for (const glm::quat& q : orientations) {
